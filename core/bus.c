@@ -1,0 +1,413 @@
+#include "bus.h"
+
+#include <lcm/lcm.h>
+#include <pthread.h>
+#include <stdatomic.h>
+#include <unistd.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "fsi_abort_t.h"
+#include "fsi_done_t.h"
+#include "fsi_fluid_load_t.h"
+#include "fsi_heartbeat_t.h"
+#include "fsi_register_t.h"
+#include "fsi_resend_t.h"
+#include "fsi_solid_state_t.h"
+#include "fsi_step_t.h"
+#include "fsi_welcome_t.h"
+#include "log.h"
+#include "timers.h"
+
+/* Uniform access to the lcm-gen functions of each type. Every message struct starts
+ * with its fsi_header_t, so a message pointer is also a header pointer. */
+typedef struct {
+    size_t size;
+    int (*encoded_size)(const void *msg);
+    int (*encode)(void *buf, int maxlen, const void *msg);
+    int (*decode)(const void *buf, int len, void *msg);
+    void (*cleanup)(void *msg);
+} msg_codec;
+
+#define FSI_CODEC(T)                                                                  \
+    static int T##_size_any(const void *m) { return fsi_##T##_encoded_size(m); }     \
+    static int T##_encode_any(void *b, int n, const void *m)                          \
+    {                                                                                 \
+        return fsi_##T##_encode(b, 0, n, m);                                          \
+    }                                                                                 \
+    static int T##_decode_any(const void *b, int n, void *m)                          \
+    {                                                                                 \
+        return fsi_##T##_decode(b, 0, n, m);                                          \
+    }                                                                                 \
+    static void T##_cleanup_any(void *m) { fsi_##T##_decode_cleanup(m); }
+
+FSI_CODEC(register_t)
+FSI_CODEC(welcome_t)
+FSI_CODEC(step_t)
+FSI_CODEC(solid_state_t)
+FSI_CODEC(fluid_load_t)
+FSI_CODEC(done_t)
+FSI_CODEC(resend_t)
+FSI_CODEC(heartbeat_t)
+FSI_CODEC(abort_t)
+
+#define CODEC_ENTRY(T)                                                                \
+    {                                                                                 \
+        sizeof(fsi_##T), T##_size_any, T##_encode_any, T##_decode_any, T##_cleanup_any \
+    }
+
+static const msg_codec codecs[FSI_MSG_COUNT] = {
+    [FSI_MSG_REGISTER] = CODEC_ENTRY(register_t),
+    [FSI_MSG_WELCOME] = CODEC_ENTRY(welcome_t),
+    [FSI_MSG_STEP] = CODEC_ENTRY(step_t),
+    [FSI_MSG_SOLID_STATE] = CODEC_ENTRY(solid_state_t),
+    [FSI_MSG_FLUID_LOAD] = CODEC_ENTRY(fluid_load_t),
+    [FSI_MSG_DONE] = CODEC_ENTRY(done_t),
+    [FSI_MSG_RESEND] = CODEC_ENTRY(resend_t),
+    [FSI_MSG_HEARTBEAT] = CODEC_ENTRY(heartbeat_t),
+    [FSI_MSG_ABORT] = CODEC_ENTRY(abort_t),
+};
+
+/* Kept copies of recent data messages, answered on resend_t. A handful covers the
+ * lockstep protocol, where only the current window's messages are ever asked for. */
+#define KEPT_MAX 16
+/* A copy is published again at most this often: requests that queued up while this
+ * process was computing must not each send a large message. */
+#define RESEND_MIN_GAP_S 0.005
+
+typedef struct {
+    int used;
+    fsi_msg_type type;
+    int window, iteration;
+    void *bytes;
+    int len;
+    double last_sent;
+} kept_message;
+
+struct fsi_bus {
+    lcm_t *lcm;
+    char self[64];
+    int64_t run_id;
+    fsi_bus_handler handler;
+    void *user;
+
+    pthread_mutex_t lock;      /* guards everything below */
+    int64_t seq;
+    kept_message kept[KEPT_MAX];
+    int kept_next;
+    fsi_bus_counters counters;
+    double drop_fraction;
+    uint64_t drop_state;
+
+    pthread_t heartbeat_thread;
+    int heartbeat_running;
+    double heartbeat_interval;
+    atomic_int heartbeat_stop;
+    atomic_int heartbeat_window;
+    atomic_int heartbeat_state;
+};
+
+static int keeps_copy(fsi_msg_type type)
+{
+    return type == FSI_MSG_STEP || type == FSI_MSG_SOLID_STATE ||
+           type == FSI_MSG_FLUID_LOAD || type == FSI_MSG_DONE;
+}
+
+/* splitmix64: a small, well-mixed generator, so drops are reproducible per seed. */
+static uint64_t next_random(uint64_t *state)
+{
+    uint64_t z = (*state += 0x9E3779B97F4A7C15ull);
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+    return z ^ (z >> 31);
+}
+
+static uint64_t name_hash(const char *s)
+{
+    uint64_t h = 1469598103934665603ull;
+    for (; *s; s++)
+        h = (h ^ (unsigned char)*s) * 1099511628211ull;
+    return h;
+}
+
+static void read_test_drop_switch(fsi_bus *b)
+{
+    const char *f = getenv("FSI_TEST_DROP_FRACTION");
+    if (!f || !*f)
+        return;
+    char *end;
+    double fraction = strtod(f, &end);
+    if (*end || fraction < 0.0 || fraction >= 1.0) {
+        fsi_warn("FSI_TEST_DROP_FRACTION='%s' is not in [0, 1); ignored", f);
+        return;
+    }
+    const char *seed = getenv("FSI_TEST_DROP_SEED");
+    b->drop_fraction = fraction;
+    b->drop_state = (seed ? strtoull(seed, NULL, 10) : 1u) ^ name_hash(b->self);
+}
+
+static int test_drops_this_one(fsi_bus *b)
+{
+    if (b->drop_fraction <= 0.0)
+        return 0;
+    double u = (double)(next_random(&b->drop_state) >> 11) * 0x1.0p-53;
+    return u < b->drop_fraction;
+}
+
+/* Sends bytes unless the test switch withholds them; caller holds the lock. */
+static int send_locked(fsi_bus *b, fsi_msg_type type, const void *bytes, int len)
+{
+    if (test_drops_this_one(b)) {
+        b->counters.dropped_by_test++;
+        return 0;
+    }
+    if (lcm_publish(b->lcm, fsi_msg_channel(type), bytes, (unsigned)len) != 0) {
+        b->counters.publish_failed++;
+        return -1;
+    }
+    b->counters.published++;
+    return 0;
+}
+
+static kept_message *find_kept(fsi_bus *b, fsi_msg_type type, int window, int iteration)
+{
+    for (int i = 0; i < KEPT_MAX; i++) {
+        kept_message *k = &b->kept[i];
+        if (k->used && k->type == type && k->window == window && k->iteration == iteration)
+            return k;
+    }
+    return NULL;
+}
+
+static void keep_copy_locked(fsi_bus *b, fsi_msg_type type, int window, int iteration,
+                             void *bytes, int len)
+{
+    kept_message *k = find_kept(b, type, window, iteration);
+    if (!k) {
+        k = &b->kept[b->kept_next];
+        b->kept_next = (b->kept_next + 1) % KEPT_MAX;
+    }
+    free(k->bytes);
+    *k = (kept_message){1, type, window, iteration, bytes, len, fsi_wall_seconds()};
+}
+
+int fsi_bus_publish(fsi_bus *b, fsi_msg_type type, void *msg)
+{
+    const msg_codec *c = &codecs[type];
+    fsi_header_t *h = msg;
+
+    pthread_mutex_lock(&b->lock);
+    h->protocol_version = FSI_PROTOCOL_VERSION;
+    h->run_id = b->run_id;
+    h->seq = ++b->seq;
+    h->sender = b->self;
+    int len = c->encoded_size(msg);
+    void *bytes = malloc((size_t)len);
+    int rc = -1;
+    if (bytes && c->encode(bytes, len, msg) == len) {
+        rc = send_locked(b, type, bytes, len);
+        if (keeps_copy(type)) {
+            keep_copy_locked(b, type, h->window, h->iteration, bytes, len);
+            bytes = NULL;
+        }
+    } else {
+        b->counters.publish_failed++;
+    }
+    pthread_mutex_unlock(&b->lock);
+    free(bytes);
+    if (rc != 0)
+        fsi_error("bus: could not publish %s for window %d", fsi_msg_name(type), h->window);
+    return rc;
+}
+
+int fsi_bus_request_resend(fsi_bus *b, const char *target, fsi_msg_type type, int window,
+                           int iteration)
+{
+    fsi_resend_t r = {0};
+    r.header.window = window;
+    r.header.iteration = iteration;
+    r.target = (char *)target;
+    r.msg_type = (int32_t)type;
+    r.want_window = window;
+    r.want_iteration = iteration;
+    pthread_mutex_lock(&b->lock);
+    b->counters.resend_requests++;
+    pthread_mutex_unlock(&b->lock);
+    return fsi_bus_publish(b, FSI_MSG_RESEND, &r);
+}
+
+static void answer_resend(fsi_bus *b, const fsi_resend_t *r)
+{
+    if (strcmp(r->target, b->self) != 0 || r->msg_type < 0 || r->msg_type >= FSI_MSG_COUNT)
+        return;
+    pthread_mutex_lock(&b->lock);
+    kept_message *k = find_kept(b, (fsi_msg_type)r->msg_type, r->want_window, r->want_iteration);
+    double now = fsi_wall_seconds();
+    if (k && now - k->last_sent >= RESEND_MIN_GAP_S) {
+        k->last_sent = now;
+        if (send_locked(b, k->type, k->bytes, k->len) == 0)
+            b->counters.resent++;
+    }
+    pthread_mutex_unlock(&b->lock);
+}
+
+static void count(fsi_bus *b, long *counter)
+{
+    pthread_mutex_lock(&b->lock);
+    (*counter)++;
+    pthread_mutex_unlock(&b->lock);
+}
+
+/* Every message passes here; only valid messages of this run from others go on. */
+static void on_lcm_message(const lcm_recv_buf_t *rbuf, const char *channel, void *user)
+{
+    fsi_bus *b = user;
+    int type = fsi_msg_type_of_channel(channel);
+    if (type < 0) {
+        count(b, &b->counters.ignored_unknown_channel);
+        return;
+    }
+    const msg_codec *c = &codecs[type];
+    union {
+        fsi_header_t header;
+        fsi_register_t reg;
+        fsi_welcome_t welcome;
+        fsi_step_t step;
+        fsi_solid_state_t solid;
+        fsi_fluid_load_t fluid;
+        fsi_done_t done;
+        fsi_resend_t resend;
+        fsi_heartbeat_t heartbeat;
+        fsi_abort_t abort_msg;
+    } msg;
+    memset(&msg, 0, sizeof msg);
+    /* lcm-gen's decode checks the type fingerprint and every length against the buffer. */
+    int used = c->decode(rbuf->data, (int)rbuf->data_size, &msg);
+    if (used != (int)rbuf->data_size) {
+        if (used >= 0)
+            c->cleanup(&msg);
+        count(b, &b->counters.ignored_undecodable);
+        return;
+    }
+    const fsi_header_t *h = &msg.header;
+    if (h->protocol_version != FSI_PROTOCOL_VERSION) {
+        count(b, &b->counters.ignored_bad_version);
+    } else if (h->run_id != b->run_id) {
+        count(b, &b->counters.ignored_foreign_run);
+    } else if (strcmp(h->sender, b->self) != 0) {
+        count(b, &b->counters.received);
+        if (type == FSI_MSG_RESEND)
+            answer_resend(b, &msg.resend);
+        else if (b->handler)
+            b->handler((fsi_msg_type)type, &msg, b->user);
+    }
+    c->cleanup(&msg);
+}
+
+fsi_bus *fsi_bus_open(const char *url, const char *self, int64_t run_id,
+                      fsi_bus_handler handler, void *user)
+{
+    fsi_bus *b = calloc(1, sizeof *b);
+    if (!b)
+        return NULL;
+    snprintf(b->self, sizeof b->self, "%s", self);
+    b->run_id = run_id;
+    b->handler = handler;
+    b->user = user;
+    pthread_mutex_init(&b->lock, NULL);
+    atomic_init(&b->heartbeat_stop, 0);
+    atomic_init(&b->heartbeat_window, -1);
+    atomic_init(&b->heartbeat_state, 0);
+    read_test_drop_switch(b);
+    b->lcm = lcm_create(url && *url ? url : FSI_DEFAULT_LCM_URL);
+    if (!b->lcm) {
+        fsi_error("bus: cannot open LCM URL '%s' (no multicast route? see docs/protocol.md)",
+                  url && *url ? url : FSI_DEFAULT_LCM_URL);
+        pthread_mutex_destroy(&b->lock);
+        free(b);
+        return NULL;
+    }
+    if (!lcm_subscribe(b->lcm, ".*", on_lcm_message, b)) {
+        fsi_error("bus: cannot subscribe on '%s'", url);
+        fsi_bus_close(b);
+        return NULL;
+    }
+    return b;
+}
+
+int fsi_bus_poll(fsi_bus *b, double timeout_s)
+{
+    int ms = timeout_s <= 0 ? 0 : (int)(timeout_s * 1000.0 + 0.5);
+    return lcm_handle_timeout(b->lcm, ms);
+}
+
+static void *heartbeat_loop(void *arg)
+{
+    fsi_bus *b = arg;
+    long pause_ms = (long)(b->heartbeat_interval * 1e3);
+    while (!atomic_load(&b->heartbeat_stop)) {
+        fsi_heartbeat_t hb = {0};
+        hb.header.window = atomic_load(&b->heartbeat_window);
+        hb.state = atomic_load(&b->heartbeat_state);
+        fsi_bus_publish(b, FSI_MSG_HEARTBEAT, &hb);
+        /* Short naps, so that close does not wait a whole interval. */
+        for (long slept = 0; slept < pause_ms && !atomic_load(&b->heartbeat_stop); slept += 10)
+            usleep(10000);
+    }
+    return NULL;
+}
+
+int fsi_bus_start_heartbeat(fsi_bus *b, double interval_s)
+{
+    if (b->heartbeat_running)
+        return 0;
+    b->heartbeat_interval = interval_s;
+    atomic_store(&b->heartbeat_stop, 0);
+    if (pthread_create(&b->heartbeat_thread, NULL, heartbeat_loop, b) != 0) {
+        fsi_error("bus: cannot start the heartbeat thread");
+        return -1;
+    }
+    b->heartbeat_running = 1;
+    return 0;
+}
+
+void fsi_bus_set_heartbeat(fsi_bus *b, int window, int state)
+{
+    atomic_store(&b->heartbeat_window, window);
+    atomic_store(&b->heartbeat_state, state);
+}
+
+fsi_bus_counters fsi_bus_get_counters(fsi_bus *b)
+{
+    pthread_mutex_lock(&b->lock);
+    fsi_bus_counters c = b->counters;
+    pthread_mutex_unlock(&b->lock);
+    return c;
+}
+
+double fsi_bus_test_drop_fraction(const fsi_bus *b)
+{
+    return b->drop_fraction;
+}
+
+const char *fsi_bus_self(const fsi_bus *b)
+{
+    return b->self;
+}
+
+void fsi_bus_close(fsi_bus *b)
+{
+    if (!b)
+        return;
+    if (b->heartbeat_running) {
+        atomic_store(&b->heartbeat_stop, 1);
+        pthread_join(b->heartbeat_thread, NULL);
+    }
+    if (b->lcm)
+        lcm_destroy(b->lcm);
+    for (int i = 0; i < KEPT_MAX; i++)
+        free(b->kept[i].bytes);
+    pthread_mutex_destroy(&b->lock);
+    free(b);
+}

@@ -1,0 +1,52 @@
+/* Particle output: one HDF5 file per participant plus an XDMF sidecar that
+ * ParaView opens as a time series (docs/output.md).
+ *
+ * File layout:
+ *   /                      attributes: participant, solver, dimension, fsi_version
+ *   /static/<field>        written once (e.g. id, initial position, mass)
+ *   /frames/NNNNNN/<field> one group per output frame, attributes time [s], step, frame
+ * Every frame holds "position" (n x FSI_DIM) and any number of point fields with
+ * 1 (scalar), FSI_DIM (vector) or FSI_DIM*FSI_DIM (tensor) components.
+ *
+ * Robustness: the file is closed after each frame and reopened for the next, and
+ * the XDMF sidecar is rewritten atomically (write to a temporary, rename) listing only
+ * complete frames, so a process killed at any moment between frames leaves files that
+ * h5dump and ParaView read.
+ *
+ * Ownership: the writer copies nothing it is given; arrays only need to live for the
+ * duration of the call. */
+#ifndef FSI_H5_OUTPUT_H
+#define FSI_H5_OUTPUT_H
+
+#include <stdint.h>
+
+typedef struct fsi_h5_writer fsi_h5_writer;
+
+/* Creates (truncates) DIR/NAME.h5 and DIR/NAME.xmf. Returns NULL with a message
+ * on stderr when the file cannot be created. */
+fsi_h5_writer *fsi_h5_create(const char *dir, const char *name, const char *solver);
+
+/* Static data, written once before or between frames. ncomp components per point. */
+int fsi_h5_write_static_real(fsi_h5_writer *w, const char *field, const double *data,
+                             int n, int ncomp);
+int fsi_h5_write_static_int(fsi_h5_writer *w, const char *field, const int32_t *data,
+                            int n, int ncomp);
+
+/* Opens frame 'frame' at simulated time 'time' after coupling window 'step',
+ * with n points whose coordinates are position[n * FSI_DIM]. */
+int fsi_h5_begin_frame(fsi_h5_writer *w, int frame, double time, long step, int n,
+                       const double *position);
+/* A point field of the open frame: n * ncomp values, ncomp in {1, FSI_DIM, FSI_DIM^2}. */
+int fsi_h5_write_field_real(fsi_h5_writer *w, const char *field, const double *data,
+                            int ncomp);
+int fsi_h5_write_field_int(fsi_h5_writer *w, const char *field, const int32_t *data,
+                           int ncomp);
+/* Closes the frame: flushes and closes the HDF5 file, rewrites the XDMF sidecar. */
+int fsi_h5_end_frame(fsi_h5_writer *w);
+
+/* Number of complete frames written so far. */
+int fsi_h5_frames(const fsi_h5_writer *w);
+
+void fsi_h5_close(fsi_h5_writer *w);
+
+#endif

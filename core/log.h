@@ -1,0 +1,23 @@
+/* Messages to stderr with the process name in front, so interleaved output of
+ * the coupler and the participants stays readable. */
+#ifndef FSI_LOG_H
+#define FSI_LOG_H
+
+#include <stdarg.h>
+
+/* Name printed in front of every message ("coupler", "solid", ...). */
+void fsi_log_set_name(const char *name);
+const char *fsi_log_name(void);
+
+void fsi_info(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
+void fsi_warn(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
+void fsi_error(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
+
+/* Exit codes shared by every program of the project. */
+enum {
+    FSI_EXIT_OK = 0,
+    FSI_EXIT_RUN_FAILURE = 1,
+    FSI_EXIT_BAD_INPUT = 2
+};
+
+#endif

@@ -1,0 +1,584 @@
+#include "participant.h"
+
+#include <limits.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "bus.h"
+#include "dim.h"
+#include "fsi_abort_t.h"
+#include "fsi_done_t.h"
+#include "fsi_fluid_load_t.h"
+#include "fsi_heartbeat_t.h"
+#include "fsi_register_t.h"
+#include "fsi_solid_state_t.h"
+#include "fsi_step_t.h"
+#include "fsi_welcome_t.h"
+#include "log.h"
+#include "participant_env.h"
+
+#define MAX_PROBES 64
+#define MAX_PEERS 8
+/* Re-requests of a missing message back off from the first to the last interval. */
+#define REQUEST_FIRST_S 0.01
+#define REQUEST_LAST_S 0.5
+
+/* The other side's interface data, tagged with the window it belongs to. */
+typedef struct {
+    int window;      /* -1: empty */
+    int n, capacity;
+    int32_t *id;
+    double *position, *velocity, *acceleration, *volume, *pressure, *force;
+} interface_slot;
+
+struct fsi_participant {
+    char name[64];
+    char role[16];
+    char out_dir[PATH_MAX];
+    fsi_case *case_file;
+    fsi_bus *bus;
+    fsi_run_env env;
+
+    double dt_first;
+    int n_probes;
+    char *probe_names[MAX_PROBES];
+    double probe_values[MAX_PROBES];
+
+    int registered, welcomed;
+    char peer_name[MAX_PEERS][64];
+    char peer_role[MAX_PEERS][16];
+    int n_peers;
+
+    /* current window */
+    int window;
+    double t, dt;
+    int flags, frame;
+    int finished;
+
+    /* the next grant, possibly received before it is asked for */
+    int next_window;     /* -1: none */
+    double next_t, next_dt;
+    int next_flags, next_frame;
+
+    interface_slot other;
+
+    double coupler_last_heard;
+    int coupler_finished;
+    int aborted;
+    char abort_culprit[64];
+    char abort_reason[512];
+
+    fsi_timers lib_timers;    /* time spent waiting on the other processes */
+    int t_wait;
+};
+
+static const char *other_role(const fsi_participant *p)
+{
+    return strcmp(p->role, "fluid") == 0 ? "solid" : "fluid";
+}
+
+static const char *peer_with_role(const fsi_participant *p, const char *role)
+{
+    for (int i = 0; i < p->n_peers; i++)
+        if (strcmp(p->peer_role[i], role) == 0)
+            return p->peer_name[i];
+    return NULL;
+}
+
+static void grow_slot(interface_slot *s, int n)
+{
+    if (n <= s->capacity)
+        return;
+    size_t v = (size_t)n * FSI_DIM * sizeof(double), sc = (size_t)n * sizeof(double);
+    s->id = realloc(s->id, (size_t)n * sizeof(int32_t));
+    s->position = realloc(s->position, v);
+    s->velocity = realloc(s->velocity, v);
+    s->acceleration = realloc(s->acceleration, v);
+    s->force = realloc(s->force, v);
+    s->volume = realloc(s->volume, sc);
+    s->pressure = realloc(s->pressure, sc);
+    if (!s->id || !s->position || !s->velocity || !s->acceleration || !s->force ||
+        !s->volume || !s->pressure) {
+        fsi_error("out of memory for %d interface particles", n);
+        exit(FSI_EXIT_RUN_FAILURE);
+    }
+    s->capacity = n;
+}
+
+static void free_slot(interface_slot *s)
+{
+    free(s->id);
+    free(s->position);
+    free(s->velocity);
+    free(s->acceleration);
+    free(s->force);
+    free(s->volume);
+    free(s->pressure);
+}
+
+static int valid_interface_size(int n, int dim, int n_components)
+{
+    return n >= 0 && dim == FSI_DIM && n_components == n * FSI_DIM;
+}
+
+static void take_solid_state(fsi_participant *p, const fsi_solid_state_t *m)
+{
+    if (strcmp(p->role, "fluid") != 0 || m->header.window <= p->other.window)
+        return;
+    if (!valid_interface_size(m->n, m->dim, m->n_components)) {
+        fsi_warn("ignored solid_state of window %d: dim %d, n %d, %d components", m->header.window,
+                 m->dim, m->n, m->n_components);
+        return;
+    }
+    interface_slot *s = &p->other;
+    grow_slot(s, m->n);
+    s->window = m->header.window;
+    s->n = m->n;
+    memcpy(s->id, m->id, (size_t)m->n * sizeof(int32_t));
+    memcpy(s->position, m->position, (size_t)m->n_components * sizeof(double));
+    memcpy(s->velocity, m->velocity, (size_t)m->n_components * sizeof(double));
+    memcpy(s->acceleration, m->acceleration, (size_t)m->n_components * sizeof(double));
+    memcpy(s->volume, m->volume, (size_t)m->n * sizeof(double));
+}
+
+static void take_fluid_load(fsi_participant *p, const fsi_fluid_load_t *m)
+{
+    if (strcmp(p->role, "solid") != 0 || m->header.window <= p->other.window)
+        return;
+    if (!valid_interface_size(m->n, m->dim, m->n_components)) {
+        fsi_warn("ignored fluid_load of window %d: dim %d, n %d, %d components", m->header.window,
+                 m->dim, m->n, m->n_components);
+        return;
+    }
+    interface_slot *s = &p->other;
+    grow_slot(s, m->n);
+    s->window = m->header.window;
+    s->n = m->n;
+    memcpy(s->id, m->id, (size_t)m->n * sizeof(int32_t));
+    memcpy(s->pressure, m->pressure, (size_t)m->n * sizeof(double));
+    memcpy(s->force, m->force, (size_t)m->n_components * sizeof(double));
+}
+
+static void take_welcome(fsi_participant *p, const fsi_welcome_t *m)
+{
+    if (p->welcomed || strcmp(m->participant, p->name) != 0)
+        return;
+    p->n_peers = 0;
+    for (int i = 0; i < m->n_participants && i < MAX_PEERS; i++) {
+        snprintf(p->peer_name[i], sizeof p->peer_name[i], "%s", m->participant_names[i]);
+        snprintf(p->peer_role[i], sizeof p->peer_role[i], "%s", m->participant_roles[i]);
+        p->n_peers++;
+    }
+    p->welcomed = 1;
+}
+
+static void take_step(fsi_participant *p, const fsi_step_t *m)
+{
+    int k = m->header.window;
+    if (k <= p->window || (p->next_window >= 0 && k <= p->next_window))
+        return;
+    p->next_window = k;
+    p->next_t = m->t;
+    p->next_dt = m->dt;
+    p->next_flags = m->flags;
+    p->next_frame = m->frame;
+}
+
+static void on_message(fsi_msg_type type, const void *msg, void *user)
+{
+    fsi_participant *p = user;
+    const fsi_header_t *h = msg;
+    if (strcmp(h->sender, FSI_COUPLER_NAME) == 0)
+        p->coupler_last_heard = fsi_wall_seconds();
+    switch (type) {
+    case FSI_MSG_WELCOME:
+        take_welcome(p, msg);
+        break;
+    case FSI_MSG_STEP:
+        take_step(p, msg);
+        break;
+    case FSI_MSG_SOLID_STATE:
+        take_solid_state(p, msg);
+        break;
+    case FSI_MSG_FLUID_LOAD:
+        take_fluid_load(p, msg);
+        break;
+    case FSI_MSG_HEARTBEAT:
+        if (strcmp(h->sender, FSI_COUPLER_NAME) == 0 &&
+            ((const fsi_heartbeat_t *)msg)->state == FSI_STATE_FINISHED)
+            p->coupler_finished = 1;
+        break;
+    case FSI_MSG_ABORT: {
+        const fsi_abort_t *a = msg;
+        if (!p->aborted) {
+            p->aborted = 1;
+            snprintf(p->abort_culprit, sizeof p->abort_culprit, "%s", a->culprit);
+            snprintf(p->abort_reason, sizeof p->abort_reason, "%s", a->reason);
+        }
+        break;
+    }
+    default:
+        break;
+    }
+}
+
+/* The run cannot go on for this process: say why and leave (output is between frames). */
+static void die_with_run(fsi_participant *p, const char *why)
+{
+    fsi_error("%s", why);
+    exit(FSI_EXIT_RUN_FAILURE);
+}
+
+static void check_run_alive(fsi_participant *p)
+{
+    char why[1024];
+    if (p->aborted) {
+        snprintf(why, sizeof why, "run aborted by %s: %s", p->abort_culprit, p->abort_reason);
+        die_with_run(p, why);
+    }
+    double silent = fsi_wall_seconds() - p->coupler_last_heard;
+    if (silent > p->env.watchdog_timeout) {
+        snprintf(why, sizeof why,
+                 "coupler not heard for %.1f s (window %d, t = %.6g s): stopping", silent,
+                 p->window, p->t);
+        die_with_run(p, why);
+    }
+}
+
+typedef int (*ready_fn)(const fsi_participant *p);
+typedef void (*request_fn)(fsi_participant *p);
+
+/* Handles messages until ready(p); asks again for what is missing with backoff. */
+static void wait_for(fsi_participant *p, ready_fn ready, request_fn request)
+{
+    fsi_timer_start(&p->lib_timers, p->t_wait);
+    double interval = REQUEST_FIRST_S;
+    double next_request = fsi_wall_seconds() + interval;
+    while (!ready(p)) {
+        check_run_alive(p);
+        double now = fsi_wall_seconds();
+        if (now >= next_request) {
+            if (request)
+                request(p);
+            interval = interval * 2 > REQUEST_LAST_S ? REQUEST_LAST_S : interval * 2;
+            next_request = now + interval;
+        }
+        if (fsi_bus_poll(p->bus, next_request - now) < 0)
+            die_with_run(p, "LCM transport failed while waiting");
+    }
+    fsi_timer_stop(&p->lib_timers, p->t_wait);
+}
+
+fsi_participant *fsi_open(const char *name, const char *role, const char *case_path,
+                          double dt_first)
+{
+    if (strcmp(role, "fluid") != 0 && strcmp(role, "solid") != 0) {
+        fsi_error("fsi_open: role must be 'fluid' or 'solid', not '%s'", role);
+        return NULL;
+    }
+    fsi_participant *p = calloc(1, sizeof *p);
+    if (!p)
+        return NULL;
+    if (fsi_run_env_read(&p->env, name, case_path) != 0) {
+        free(p);
+        return NULL;
+    }
+    snprintf(p->name, sizeof p->name, "%s", p->env.participant);
+    snprintf(p->role, sizeof p->role, "%s", role);
+    snprintf(p->out_dir, sizeof p->out_dir, "%s", p->env.out_dir);
+    fsi_log_set_name(p->name);
+    p->case_file = fsi_case_read(p->env.case_path, stderr);
+    if (!p->case_file) {
+        free(p);
+        return NULL;
+    }
+    fsi_run_env_read_timing(&p->env, p->case_file);
+    p->dt_first = dt_first;
+    p->window = -1;
+    p->next_window = -1;
+    p->other.window = -1;
+    p->t_wait = fsi_timer_index(&p->lib_timers, "coupling_wait");
+    p->bus = fsi_bus_open(p->env.lcm_url, p->name, p->env.run_id, on_message, p);
+    if (!p->bus) {
+        fsi_case_free(p->case_file);
+        free(p);
+        return NULL;
+    }
+    p->coupler_last_heard = fsi_wall_seconds();
+    fsi_bus_set_heartbeat(p->bus, -1, FSI_STATE_STARTING);
+    fsi_bus_start_heartbeat(p->bus, p->env.heartbeat_interval);
+    return p;
+}
+
+int fsi_add_probe(fsi_participant *p, const char *column)
+{
+    if (p->registered || p->n_probes == MAX_PROBES) {
+        fsi_error("fsi_add_probe('%s'): %s", column,
+                  p->registered ? "probes must be added before the first window"
+                                : "too many probes");
+        return -1;
+    }
+    p->probe_names[p->n_probes] = strdup(column);
+    p->probe_values[p->n_probes] = 0.0;
+    return p->n_probes++;
+}
+
+static void send_register(fsi_participant *p)
+{
+    char host[256] = "";
+    gethostname(host, sizeof host - 1);
+    fsi_register_t r = {0};
+    r.header.window = -1;
+    r.role = p->role;
+    r.pid = (int32_t)getpid();
+    r.host = host;
+    r.dt_proposed = p->dt_first;
+    r.n_probes = p->n_probes;
+    r.probe_names = p->probe_names;
+    fsi_bus_publish(p->bus, FSI_MSG_REGISTER, &r);
+}
+
+static int is_welcomed(const fsi_participant *p)
+{
+    return p->welcomed;
+}
+
+static int has_next_step(const fsi_participant *p)
+{
+    return p->next_window == p->window + 1;
+}
+
+static void request_step(fsi_participant *p)
+{
+    fsi_bus_request_resend(p->bus, FSI_COUPLER_NAME, FSI_MSG_STEP, p->window + 1, 0);
+}
+
+int fsi_ongoing(fsi_participant *p)
+{
+    if (p->finished)
+        return 0;
+    if (!p->registered) {
+        p->registered = 1;
+        send_register(p);
+        wait_for(p, is_welcomed, send_register);
+    }
+    wait_for(p, has_next_step, request_step);
+    p->window = p->next_window;
+    p->t = p->next_t;
+    p->dt = p->next_dt;
+    p->flags = p->next_flags;
+    p->frame = p->next_frame;
+    fsi_bus_set_heartbeat(p->bus, p->window, FSI_STATE_RUNNING);
+    if (p->flags & FSI_STEP_FINISH)
+        p->finished = 1;
+    return !p->finished;
+}
+
+double fsi_window(const fsi_participant *p)
+{
+    return p->dt;
+}
+
+double fsi_time(const fsi_participant *p)
+{
+    return p->t;
+}
+
+int fsi_window_index(const fsi_participant *p)
+{
+    return p->window;
+}
+
+int fsi_output_frame(const fsi_participant *p)
+{
+    return p->frame;
+}
+
+int fsi_coupled(const fsi_participant *p)
+{
+    return peer_with_role(p, other_role(p)) != NULL;
+}
+
+int fsi_write_interface(fsi_participant *p, const fsi_interface *d)
+{
+    if (!fsi_coupled(p))
+        return 0;
+    if (strcmp(p->role, "solid") == 0) {
+        fsi_solid_state_t m = {0};
+        m.header.window = p->window;
+        m.dim = FSI_DIM;
+        m.n = d->n;
+        m.n_components = d->n * FSI_DIM;
+        m.id = d->id;
+        m.position = d->position;
+        m.velocity = d->velocity;
+        m.acceleration = d->acceleration;
+        m.volume = d->volume;
+        return fsi_bus_publish(p->bus, FSI_MSG_SOLID_STATE, &m);
+    }
+    fsi_fluid_load_t m = {0};
+    m.header.window = p->window;
+    m.dim = FSI_DIM;
+    m.n = d->n;
+    m.n_components = d->n * FSI_DIM;
+    m.id = d->id;
+    m.pressure = d->pressure;
+    m.force = d->force;
+    return fsi_bus_publish(p->bus, FSI_MSG_FLUID_LOAD, &m);
+}
+
+static int has_interface_data(const fsi_participant *p)
+{
+    return p->other.window == p->window;
+}
+
+static void request_interface(fsi_participant *p)
+{
+    int solid_waits = strcmp(p->role, "solid") == 0;
+    fsi_bus_request_resend(p->bus, peer_with_role(p, other_role(p)),
+                           solid_waits ? FSI_MSG_FLUID_LOAD : FSI_MSG_SOLID_STATE, p->window, 0);
+}
+
+int fsi_read_interface(fsi_participant *p, fsi_interface *d)
+{
+    memset(d, 0, sizeof *d);
+    if (!fsi_coupled(p))
+        return 0;
+    wait_for(p, has_interface_data, request_interface);
+    const interface_slot *s = &p->other;
+    d->n = s->n;
+    d->id = s->id;
+    d->position = s->position;
+    d->velocity = s->velocity;
+    d->acceleration = s->acceleration;
+    d->volume = s->volume;
+    d->pressure = s->pressure;
+    d->force = s->force;
+    return 0;
+}
+
+void fsi_set_probe(fsi_participant *p, int index, double value)
+{
+    if (index >= 0 && index < p->n_probes)
+        p->probe_values[index] = value;
+}
+
+static int send_done(fsi_participant *p, int status, double dt_next_max, int n_stats,
+                     char **names, double *values)
+{
+    fsi_done_t d = {0};
+    d.header.window = p->window;
+    d.status = status;
+    d.dt_next_max = dt_next_max;
+    d.n_probes = p->n_probes;
+    d.probe_values = p->probe_values;
+    d.n_stats = n_stats;
+    d.stat_names = names;
+    d.stat_values = values;
+    d.message = "";
+    return fsi_bus_publish(p->bus, FSI_MSG_DONE, &d);
+}
+
+int fsi_advance(fsi_participant *p, double dt_next_max)
+{
+    return send_done(p, FSI_STATUS_OK, dt_next_max, 0, NULL, NULL);
+}
+
+void fsi_abort(fsi_participant *p, const char *fmt, ...)
+{
+    char reason[512];
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(reason, sizeof reason, fmt, ap);
+    va_end(ap);
+    fsi_error("%s", reason);
+    fsi_abort_t a = {0};
+    a.header.window = p->window;
+    a.culprit = p->name;
+    a.reason = reason;
+    /* Sent a few times: UDP may lose one, and the coupler's watchdog is the slow path. */
+    for (int i = 0; i < 3; i++)
+        fsi_bus_publish(p->bus, FSI_MSG_ABORT, &a);
+}
+
+static int coupler_has_finished(const fsi_participant *p)
+{
+    return p->coupler_finished;
+}
+
+/* Timers and bus counters as name/value pairs for the final done_t. */
+static int collect_stats(fsi_participant *p, const fsi_timers *timers, char **names,
+                         double *values, int max)
+{
+    int n = 0;
+    for (int i = 0; timers && i < timers->n && n < max; i++, n++) {
+        names[n] = (char *)timers->name[i];
+        values[n] = timers->seconds[i];
+    }
+    for (int i = 0; i < p->lib_timers.n && n < max; i++, n++) {
+        names[n] = (char *)p->lib_timers.name[i];
+        values[n] = p->lib_timers.seconds[i];
+    }
+    fsi_bus_counters c = fsi_bus_get_counters(p->bus);
+    const struct {
+        const char *name;
+        long value;
+    } counters[] = {
+        {"bus_published", c.published},
+        {"bus_received", c.received},
+        {"bus_resent", c.resent},
+        {"bus_resend_requests", c.resend_requests},
+        {"bus_dropped_by_test", c.dropped_by_test},
+        {"bus_ignored_foreign_run", c.ignored_foreign_run},
+        {"bus_ignored_bad_version", c.ignored_bad_version},
+        {"bus_ignored_undecodable", c.ignored_undecodable},
+        {"bus_ignored_unknown_channel", c.ignored_unknown_channel},
+    };
+    for (size_t i = 0; i < sizeof counters / sizeof counters[0] && n < max; i++, n++) {
+        names[n] = (char *)counters[i].name;
+        values[n] = (double)counters[i].value;
+    }
+    return n;
+}
+
+int fsi_close(fsi_participant *p, const fsi_timers *timers)
+{
+    int status = FSI_EXIT_OK;
+    if (p->finished) {
+        char *names[2 * FSI_TIMERS_MAX + 16];
+        double values[2 * FSI_TIMERS_MAX + 16];
+        int n = collect_stats(p, timers, names, values, 2 * FSI_TIMERS_MAX + 16);
+        send_done(p, FSI_STATUS_FINISHED, 0.0, n, names, values);
+        fsi_bus_set_heartbeat(p->bus, p->window, FSI_STATE_FINISHED);
+        /* Stay until the coupler confirms it has every final report (it re-requests a
+         * lost one from us while we wait here). */
+        wait_for(p, coupler_has_finished, NULL);
+    } else {
+        status = FSI_EXIT_RUN_FAILURE;
+    }
+    fsi_bus_close(p->bus);
+    fsi_case_free(p->case_file);
+    free_slot(&p->other);
+    for (int i = 0; i < p->n_probes; i++)
+        free(p->probe_names[i]);
+    free(p);
+    return status;
+}
+
+const fsi_case *fsi_participant_case(const fsi_participant *p)
+{
+    return p->case_file;
+}
+
+const char *fsi_participant_name(const fsi_participant *p)
+{
+    return p->name;
+}
+
+const char *fsi_output_dir(const fsi_participant *p)
+{
+    return p->out_dir;
+}

@@ -1,0 +1,97 @@
+/* The participant library: how a solver joins a coupled run (docs/participant_api.md).
+ *
+ *     fsi_participant *p = fsi_open(NULL, "solid", NULL, dt_stable);
+ *     int tip = fsi_add_probe(p, "tip_uy");
+ *     while (fsi_ongoing(p)) {                 // blocks until the coupler grants a window
+ *         double dt = fsi_window(p);
+ *         fsi_write_interface(p, &my_state);   // solid: state at t_k
+ *         fsi_read_interface(p, &loads);       // solid: the fluid's loads for this window
+ *         ... advance by dt (sub-cycling as needed) ...
+ *         fsi_set_probe(p, tip, uy);
+ *         if (fsi_output_frame(p) >= 0) ... write output at fsi_time(p) + dt ...
+ *         fsi_advance(p, dt_next_max);
+ *     }
+ *     return fsi_close(p, &timers);
+ *
+ * The run is coordinated through the environment `fsi run` sets for every process:
+ * FSI_PARTICIPANT (name), FSI_CASE (resolved case file), FSI_OUT (output folder),
+ * FSI_RUN_ID and FSI_LCM_URL.
+ *
+ * Failure: when the run is aborted (another process failed) or the coupler falls
+ * silent for [run] watchdog_timeout, the library prints why and exits the process
+ * with status 1; output files are closed between frames, so they stay readable.
+ * A solver that fails itself calls fsi_abort() so that everyone stops at once.
+ *
+ * Ownership: the handle owns the case, the bus and the buffers that
+ * fsi_read_interface() hands out (valid until the next read or fsi_close). */
+#ifndef FSI_PARTICIPANT_H
+#define FSI_PARTICIPANT_H
+
+#include <stdint.h>
+
+#include "case_file.h"
+#include "timers.h"
+
+typedef struct fsi_participant fsi_participant;
+
+/* Interface particle data. The solid writes id, position, velocity, acceleration
+ * (n * FSI_DIM, particle-major) and volume; the fluid writes id, pressure and force
+ * (n * FSI_DIM) for the particles it received. */
+typedef struct {
+    int n;
+    int32_t *id;
+    double *position;
+    double *velocity;
+    double *acceleration;
+    double *volume;
+    double *pressure;
+    double *force;
+} fsi_interface;
+
+/* Joins the run. NULL name/case_path are taken from FSI_PARTICIPANT/FSI_CASE.
+ * role is "fluid" or "solid"; dt_first is the largest first window this solver can
+ * take [s]. Returns NULL with a message when the environment or case is unusable.
+ * Registration with the coupler happens in the first fsi_ongoing() call. */
+fsi_participant *fsi_open(const char *name, const char *role, const char *case_path,
+                          double dt_first);
+
+/* Declares a probe column "<probe>_<quantity>" before the first fsi_ongoing();
+ * returns its index for fsi_set_probe, or -1. */
+int fsi_add_probe(fsi_participant *p, const char *column);
+
+/* Blocks until the coupler grants the next window; 1 when there is one to compute,
+ * 0 when the run is over (then call fsi_close). */
+int fsi_ongoing(fsi_participant *p);
+
+double fsi_window(const fsi_participant *p);      /* dt of the current window [s] */
+double fsi_time(const fsi_participant *p);        /* t_k, its start [s] */
+int fsi_window_index(const fsi_participant *p);   /* k */
+/* Frame index to write at the end of this window (at t_k + dt), or -1. */
+int fsi_output_frame(const fsi_participant *p);
+/* True when the other side of the interface takes part in this run. */
+int fsi_coupled(const fsi_participant *p);
+
+/* Publishes this side's interface data for the current window. */
+int fsi_write_interface(fsi_participant *p, const fsi_interface *data);
+/* Blocks until the other side's data for the current window has arrived and points
+ * 'data' at it (arrays owned by p). Uncoupled: n = 0. */
+int fsi_read_interface(fsi_participant *p, fsi_interface *data);
+
+/* Value of a probe at the end of the current window. */
+void fsi_set_probe(fsi_participant *p, int index, double value);
+
+/* Reports the window done and proposes the largest next window [s]. */
+int fsi_advance(fsi_participant *p, double dt_next_max);
+
+/* Stops everyone: publishes an abort naming this participant with the reason. */
+void fsi_abort(fsi_participant *p, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
+
+/* Sends the final report (timers may be NULL), waits until the coupler has it,
+ * frees everything. Returns the process exit status to use. */
+int fsi_close(fsi_participant *p, const fsi_timers *timers);
+
+const fsi_case *fsi_participant_case(const fsi_participant *p);
+const char *fsi_participant_name(const fsi_participant *p);
+const char *fsi_output_dir(const fsi_participant *p);
+
+#endif

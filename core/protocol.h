@@ -1,0 +1,53 @@
+/* The coupling protocol: message kinds, channels, flags and the rules every
+ * process follows (docs/protocol.md). The message layouts are in proto/fsi.lcm. */
+#ifndef FSI_PROTOCOL_H
+#define FSI_PROTOCOL_H
+
+/* Bump when proto/fsi.lcm or the rules below change incompatibly. */
+#define FSI_PROTOCOL_VERSION 1
+
+/* Message kinds; each travels on its own channel (fsi_msg_channel). */
+typedef enum {
+    FSI_MSG_REGISTER = 0,
+    FSI_MSG_WELCOME,
+    FSI_MSG_STEP,
+    FSI_MSG_SOLID_STATE,
+    FSI_MSG_FLUID_LOAD,
+    FSI_MSG_DONE,
+    FSI_MSG_RESEND,
+    FSI_MSG_HEARTBEAT,
+    FSI_MSG_ABORT,
+    FSI_MSG_COUNT
+} fsi_msg_type;
+
+/* step_t.flags */
+enum {
+    FSI_STEP_PROBE = 1,   /* sample probes at the end of the window (sent in done_t) */
+    FSI_STEP_FINISH = 2   /* the run is over: send the final done_t with stats, then close */
+};
+
+/* done_t.status */
+enum {
+    FSI_STATUS_OK = 0,
+    FSI_STATUS_FINISHED = 1
+};
+
+/* heartbeat_t.state */
+enum {
+    FSI_STATE_STARTING = 0,
+    FSI_STATE_RUNNING = 1,
+    FSI_STATE_FINISHED = 2    /* from the coupler: every final done_t arrived; exit now */
+};
+
+/* Name of the coupler on the bus (participants are named after their role). */
+#define FSI_COUPLER_NAME "coupler"
+
+/* Default LCM URL; `fsi run` uses it inside its private network namespace. */
+#define FSI_DEFAULT_LCM_URL "udpm://239.255.76.67:7667?ttl=0"
+
+const char *fsi_msg_channel(fsi_msg_type type);
+const char *fsi_msg_name(fsi_msg_type type);
+/* The kind of message a channel carries, or -1 for a channel that is not ours. */
+int fsi_msg_type_of_channel(const char *channel);
+
+#endif

@@ -1,0 +1,489 @@
+/* The coupler: registers the participants the case names, grants coupling windows
+ * in lockstep (serial-staggered: the solid publishes its state at t_k, the fluid
+ * advances and publishes loads, the solid advances), ends windows on output and probe
+ * times, watches every process's liveness, and stops the run naming whoever failed.
+ * Protocol: docs/protocol.md. */
+#include <float.h>
+#include <limits.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "bus.h"
+#include "case_file.h"
+#include "fsi_abort_t.h"
+#include "fsi_done_t.h"
+#include "fsi_heartbeat_t.h"
+#include "fsi_register_t.h"
+#include "fsi_step_t.h"
+#include "fsi_welcome_t.h"
+#include "log.h"
+#include "participant_env.h"
+#include "probes_csv.h"
+#include "progress.h"
+#include "timers.h"
+#include "window_schedule.h"
+
+#define MAX_PARTICIPANTS 2
+#define REQUEST_FIRST_S 0.01
+#define REQUEST_LAST_S 0.5
+#define POLL_SLICE_S 0.05
+
+static const char *const roles[MAX_PARTICIPANTS] = {"fluid", "solid"};
+
+typedef struct {
+    char name[64];
+    char role[16];
+    int registered;
+    int pid;
+    char host[256];
+    double last_heard;
+    double dt_proposed;
+    int done_window;
+    int n_probes;
+    char **probe_names;
+    double *probe_values;
+    int finished;
+    int n_stats;
+    char **stat_names;
+    double *stat_values;
+    double request_interval, next_request;
+} participant_info;
+
+typedef struct {
+    fsi_run_env env;
+    fsi_case *case_file;
+    fsi_bus *bus;
+    participant_info part[MAX_PARTICIPANTS];
+    int n_part;
+    int window;
+    double t;
+    int failed;
+    char culprit[64];
+    char reason[1024];
+    fsi_progress progress;
+    fsi_probes_csv probes;
+    double wall_start;
+} coupler;
+
+static participant_info *find(coupler *c, const char *name)
+{
+    for (int i = 0; i < c->n_part; i++)
+        if (strcmp(c->part[i].name, name) == 0)
+            return &c->part[i];
+    return NULL;
+}
+
+static void fail(coupler *c, const char *culprit, const char *fmt, ...)
+    __attribute__((format(printf, 3, 4)));
+
+static void fail(coupler *c, const char *culprit, const char *fmt, ...)
+{
+    if (c->failed)
+        return;
+    c->failed = 1;
+    snprintf(c->culprit, sizeof c->culprit, "%s", culprit);
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(c->reason, sizeof c->reason, fmt, ap);
+    va_end(ap);
+}
+
+static char **copy_strings(char *const *src, int n)
+{
+    char **dst = calloc((size_t)(n > 0 ? n : 1), sizeof *dst);
+    for (int i = 0; i < n; i++)
+        dst[i] = strdup(src[i]);
+    return dst;
+}
+
+static void free_strings(char **s, int n)
+{
+    for (int i = 0; s && i < n; i++)
+        free(s[i]);
+    free(s);
+}
+
+static void send_welcome(coupler *c, const participant_info *p)
+{
+    char *names[MAX_PARTICIPANTS], *proles[MAX_PARTICIPANTS];
+    for (int i = 0; i < c->n_part; i++) {
+        names[i] = c->part[i].name;
+        proles[i] = c->part[i].role;
+    }
+    fsi_welcome_t w = {0};
+    w.header.window = -1;
+    w.participant = (char *)p->name;
+    w.t_start = 0.0;
+    w.t_end = fsi_case_get_real(c->case_file, "run", "end_time", 0.0);
+    w.n_participants = c->n_part;
+    w.participant_names = names;
+    w.participant_roles = proles;
+    fsi_bus_publish(c->bus, FSI_MSG_WELCOME, &w);
+}
+
+static void take_register(coupler *c, participant_info *p, const fsi_register_t *r)
+{
+    if (strcmp(r->role, p->role) != 0) {
+        fail(c, p->name, "participant '%s' registered as a %s, but the case makes it the %s",
+             p->name, r->role, p->role);
+        return;
+    }
+    if (!p->registered) {
+        p->registered = 1;
+        p->pid = r->pid;
+        snprintf(p->host, sizeof p->host, "%s", r->host);
+        p->dt_proposed = r->dt_proposed;
+        p->n_probes = r->n_probes;
+        p->probe_names = copy_strings(r->probe_names, r->n_probes);
+        p->probe_values = calloc((size_t)(r->n_probes > 0 ? r->n_probes : 1), sizeof(double));
+        fsi_info("%s registered (pid %d on %s, %d probes)", p->name, p->pid, p->host,
+                 p->n_probes);
+    }
+    /* Answered every time: the previous welcome may have been lost. */
+    send_welcome(c, p);
+}
+
+static void take_done(coupler *c, participant_info *p, const fsi_done_t *d)
+{
+    if (d->header.window != c->window || p->done_window >= c->window)
+        return;
+    if (d->n_probes != p->n_probes) {
+        fail(c, p->name, "participant '%s' sent %d probe values, registered %d", p->name,
+             d->n_probes, p->n_probes);
+        return;
+    }
+    p->done_window = d->header.window;
+    p->dt_proposed = d->dt_next_max;
+    memcpy(p->probe_values, d->probe_values, (size_t)d->n_probes * sizeof(double));
+    if (d->status == FSI_STATUS_FINISHED) {
+        p->finished = 1;
+        p->n_stats = d->n_stats;
+        p->stat_names = copy_strings(d->stat_names, d->n_stats);
+        p->stat_values = malloc((size_t)(d->n_stats > 0 ? d->n_stats : 1) * sizeof(double));
+        memcpy(p->stat_values, d->stat_values, (size_t)d->n_stats * sizeof(double));
+    }
+}
+
+static void on_message(fsi_msg_type type, const void *msg, void *user)
+{
+    coupler *c = user;
+    const fsi_header_t *h = msg;
+    participant_info *p = find(c, h->sender);
+    if (!p)
+        return;    /* not a participant of this case: never trusted */
+    p->last_heard = fsi_wall_seconds();
+    if (type == FSI_MSG_REGISTER)
+        take_register(c, p, msg);
+    else if (type == FSI_MSG_DONE)
+        take_done(c, p, msg);
+    else if (type == FSI_MSG_ABORT) {
+        const fsi_abort_t *a = msg;
+        fail(c, a->culprit, "participant '%s' failed: %s", a->culprit, a->reason);
+    }
+}
+
+static void check_liveness(coupler *c)
+{
+    double now = fsi_wall_seconds();
+    for (int i = 0; i < c->n_part && !c->failed; i++) {
+        participant_info *p = &c->part[i];
+        double silent = now - p->last_heard;
+        if (p->registered && silent > c->env.watchdog_timeout)
+            fail(c, p->name,
+                 "participant '%s' (pid %d on %s) not heard for %.1f s at window %d "
+                 "(t = %.9g s): dead or hung",
+                 p->name, p->pid, p->host, silent, c->window, c->t);
+    }
+}
+
+static int all_registered(const coupler *c)
+{
+    for (int i = 0; i < c->n_part; i++)
+        if (!c->part[i].registered)
+            return 0;
+    return 1;
+}
+
+static int register_participants(coupler *c)
+{
+    double timeout = fsi_case_get_real(c->case_file, "run", "register_timeout", 30.0);
+    double deadline = fsi_wall_seconds() + timeout;
+    while (!all_registered(c) && !c->failed) {
+        if (fsi_wall_seconds() > deadline) {
+            for (int i = 0; i < c->n_part; i++)
+                if (!c->part[i].registered)
+                    fail(c, c->part[i].name,
+                         "participant '%s' did not register within %.0f s (not started, "
+                         "crashed at start, or on another LCM URL?)",
+                         c->part[i].name, timeout);
+            break;
+        }
+        fsi_bus_poll(c->bus, POLL_SLICE_S);
+        check_liveness(c);
+    }
+    return c->failed ? -1 : 0;
+}
+
+/* Waits for every participant's done_t of the current window, asking again for
+ * missing ones with backoff; returns -1 when the run failed meanwhile. */
+static int wait_for_done(coupler *c)
+{
+    double now = fsi_wall_seconds();
+    for (int i = 0; i < c->n_part; i++) {
+        c->part[i].request_interval = REQUEST_FIRST_S;
+        c->part[i].next_request = now + REQUEST_FIRST_S;
+    }
+    for (;;) {
+        int missing = 0;
+        double next_event = fsi_wall_seconds() + POLL_SLICE_S;
+        now = fsi_wall_seconds();
+        for (int i = 0; i < c->n_part; i++) {
+            participant_info *p = &c->part[i];
+            if (p->done_window >= c->window)
+                continue;
+            missing++;
+            if (now >= p->next_request) {
+                fsi_bus_request_resend(c->bus, p->name, FSI_MSG_DONE, c->window, 0);
+                p->request_interval = fmin(2 * p->request_interval, REQUEST_LAST_S);
+                p->next_request = now + p->request_interval;
+            }
+            next_event = fmin(next_event, p->next_request);
+        }
+        if (!missing)
+            return 0;
+        check_liveness(c);
+        if (c->failed)
+            return -1;
+        fsi_bus_poll(c->bus, next_event - now);
+        fsi_progress_update(&c->progress, c->t, c->window, 0);
+    }
+}
+
+static void publish_step(coupler *c, double dt, int flags, int frame)
+{
+    fsi_step_t s = {0};
+    s.header.window = c->window;
+    s.t = c->t;
+    s.dt = dt;
+    s.flags = flags;
+    s.frame = frame;
+    fsi_bus_set_heartbeat(c->bus, c->window, FSI_STATE_RUNNING);
+    fsi_bus_publish(c->bus, FSI_MSG_STEP, &s);
+}
+
+static double smallest_proposal(const coupler *c)
+{
+    double dt = DBL_MAX;
+    for (int i = 0; i < c->n_part; i++)
+        dt = fmin(dt, c->part[i].dt_proposed);
+    return dt;
+}
+
+static int open_probes(coupler *c)
+{
+    int n = 0;
+    for (int i = 0; i < c->n_part; i++)
+        n += c->part[i].n_probes;
+    char **names = calloc((size_t)(n > 0 ? n : 1), sizeof *names);
+    int k = 0;
+    for (int i = 0; i < c->n_part; i++)
+        for (int j = 0; j < c->part[i].n_probes; j++)
+            names[k++] = c->part[i].probe_names[j];
+    int rc = fsi_probes_csv_open(&c->probes, c->env.out_dir, n, names);
+    free(names);
+    return rc;
+}
+
+static void write_probe_row(coupler *c, double t)
+{
+    double values[1024];
+    int k = 0;
+    for (int i = 0; i < c->n_part; i++)
+        for (int j = 0; j < c->part[i].n_probes && k < 1024; j++)
+            values[k++] = c->part[i].probe_values[j];
+    fsi_probes_csv_row(&c->probes, t, values);
+}
+
+static int run_windows(coupler *c)
+{
+    double t_end = fsi_case_get_real(c->case_file, "run", "end_time", 0.0);
+    fsi_window_schedule sched;
+    fsi_window_schedule_init(&sched, t_end,
+                             fsi_case_get_real(c->case_file, "run", "output_interval", 0.01),
+                             fsi_case_get_real(c->case_file, "run", "probe_interval", 1e-3),
+                             fsi_case_get_real(c->case_file, "run", "max_window", 1e-3));
+    if (open_probes(c) != 0)
+        return -1;
+
+    /* Window 0 has zero length: everyone exchanges, writes frame 0 and samples probes
+     * at t = 0, so the first output and the first probe row describe the initial state. */
+    c->window = 0;
+    c->t = 0.0;
+    fsi_window_plan plan = {0.0, 0.0, 0, 1, 0};
+    for (;;) {
+        publish_step(c, plan.dt, plan.probe ? FSI_STEP_PROBE : 0, plan.frame);
+        if (wait_for_done(c) != 0)
+            return -1;
+        c->t = plan.t_next;
+        if (plan.probe)
+            write_probe_row(c, c->t);
+        fsi_progress_update(&c->progress, c->t, c->window, 0);
+        if (plan.last)
+            break;
+        plan = fsi_window_schedule_next(&sched, c->t, smallest_proposal(c));
+        c->window++;
+    }
+    /* The finishing window: no time advance, everyone sends its final report. */
+    c->window++;
+    publish_step(c, 0.0, FSI_STEP_FINISH, -1);
+    return wait_for_done(c);
+}
+
+static void announce_finished(coupler *c)
+{
+    /* Several copies: a participant waits for one before it exits. */
+    fsi_bus_set_heartbeat(c->bus, c->window, FSI_STATE_FINISHED);
+    for (int i = 0; i < 10; i++) {
+        fsi_heartbeat_t hb = {0};
+        hb.header.window = c->window;
+        hb.state = FSI_STATE_FINISHED;
+        fsi_bus_publish(c->bus, FSI_MSG_HEARTBEAT, &hb);
+        usleep(20000);
+    }
+}
+
+static void announce_abort(coupler *c)
+{
+    fsi_abort_t a = {0};
+    a.header.window = c->window;
+    a.culprit = c->culprit;
+    a.reason = c->reason;
+    for (int i = 0; i < 3; i++)
+        fsi_bus_publish(c->bus, FSI_MSG_ABORT, &a);
+}
+
+static void write_bus_counters(FILE *log, const char *who, fsi_bus_counters b)
+{
+    fprintf(log,
+            "bus %s: published %ld, received %ld, resent %ld, resend requests %ld, "
+            "withheld by test switch %ld, ignored: foreign run %ld, bad version %ld, "
+            "undecodable %ld, unknown channel %ld\n",
+            who, b.published, b.received, b.resent, b.resend_requests, b.dropped_by_test,
+            b.ignored_foreign_run, b.ignored_bad_version, b.ignored_undecodable,
+            b.ignored_unknown_channel);
+}
+
+/* Appends the coupler's part of run.log: windows, timers and counters of every
+ * participant, and the exit reason. */
+static void write_summary(coupler *c)
+{
+    char path[PATH_MAX];
+    snprintf(path, sizeof path, "%s/run.log", c->env.out_dir);
+    FILE *log = fopen(path, "a");
+    if (!log) {
+        fsi_error("cannot append to %s", path);
+        return;
+    }
+    double wall = fsi_wall_seconds() - c->wall_start;
+    fprintf(log, "\n[coupler]\nwindows = %d\nsimulated_time = %.9g s\nwall_time = %.3f s\n"
+                 "windows_per_second = %.1f\n",
+            c->window, c->t, wall, wall > 0 ? c->window / wall : 0.0);
+    write_bus_counters(log, "coupler", fsi_bus_get_counters(c->bus));
+    for (int i = 0; i < c->n_part; i++) {
+        participant_info *p = &c->part[i];
+        fprintf(log, "\n[participant %s]\nrole = %s\npid = %d\nhost = %s\n", p->name, p->role,
+                p->pid, p->host);
+        for (int s = 0; s < p->n_stats; s++)
+            fprintf(log, "%s = %.6g%s\n", p->stat_names[s], p->stat_values[s],
+                    strncmp(p->stat_names[s], "bus_", 4) == 0 ? "" : " s");
+    }
+    if (c->failed)
+        fprintf(log, "\ncoupler_exit = failure: %s\n", c->reason);
+    else
+        fprintf(log, "\ncoupler_exit = ok\n");
+    fclose(log);
+}
+
+static int setup(coupler *c)
+{
+    fsi_log_set_name(FSI_COUPLER_NAME);
+    if (fsi_run_env_read(&c->env, FSI_COUPLER_NAME, NULL) != 0)
+        return -1;
+    c->case_file = fsi_case_read(c->env.case_path, stderr);
+    if (!c->case_file)
+        return -1;
+    fsi_run_env_read_timing(&c->env, c->case_file);
+    for (int r = 0; r < MAX_PARTICIPANTS; r++) {
+        if (!fsi_case_has_section(c->case_file, roles[r]))
+            continue;
+        participant_info *p = &c->part[c->n_part++];
+        snprintf(p->name, sizeof p->name, "%s", roles[r]);
+        snprintf(p->role, sizeof p->role, "%s", roles[r]);
+        p->done_window = -1;
+        p->dt_proposed = DBL_MAX;
+    }
+    if (c->n_part == 0) {
+        fsi_error("the case has neither [fluid] nor [solid]: nothing to couple");
+        return -1;
+    }
+    c->bus = fsi_bus_open(c->env.lcm_url, FSI_COUPLER_NAME, c->env.run_id, on_message, c);
+    if (!c->bus)
+        return -1;
+    fsi_bus_set_heartbeat(c->bus, -1, FSI_STATE_STARTING);
+    return fsi_bus_start_heartbeat(c->bus, c->env.heartbeat_interval);
+}
+
+static void teardown(coupler *c)
+{
+    fsi_probes_csv_close(&c->probes);
+    fsi_bus_close(c->bus);
+    for (int i = 0; i < c->n_part; i++) {
+        participant_info *p = &c->part[i];
+        free_strings(p->probe_names, p->n_probes);
+        free(p->probe_values);
+        free_strings(p->stat_names, p->n_stats);
+        free(p->stat_values);
+    }
+    fsi_case_free(c->case_file);
+}
+
+int main(void)
+{
+    static coupler c;
+    if (setup(&c) != 0) {
+        teardown(&c);
+        return FSI_EXIT_RUN_FAILURE;
+    }
+    c.wall_start = fsi_wall_seconds();
+    double now = c.wall_start;
+    for (int i = 0; i < c.n_part; i++)
+        c.part[i].last_heard = now;
+    fsi_progress_init(&c.progress, stdout,
+                      fsi_case_get_real(c.case_file, "run", "progress_interval", 2.0),
+                      fsi_case_get_real(c.case_file, "run", "end_time", 0.0));
+    if (fsi_bus_test_drop_fraction(c.bus) > 0)
+        fsi_warn("test switch: withholding %.0f %% of published messages",
+                 100 * fsi_bus_test_drop_fraction(c.bus));
+
+    int rc = register_participants(&c);
+    if (rc == 0)
+        rc = run_windows(&c);
+    fsi_progress_update(&c.progress, c.t, c.window, 1);
+    if (c.progress.tty)
+        fputc('\n', stdout);
+    if (rc == 0 && !c.failed) {
+        announce_finished(&c);
+        fsi_info("run finished: %d windows, t = %.9g s", c.window, c.t);
+    } else {
+        announce_abort(&c);
+        fsi_error("run stopped: %s", c.reason);
+    }
+    write_summary(&c);
+    int status = c.failed ? FSI_EXIT_RUN_FAILURE : FSI_EXIT_OK;
+    teardown(&c);
+    return status;
+}

@@ -1,0 +1,42 @@
+#include "progress.h"
+
+#include <unistd.h>
+
+#include "timers.h"
+
+void fsi_progress_init(fsi_progress *p, FILE *out, double interval, double t_end)
+{
+    p->out = out;
+    p->interval = interval;
+    p->t_end = t_end;
+    p->wall_start = p->wall_last = fsi_wall_seconds();
+    p->windows_last = 0;
+    p->tty = isatty(fileno(out));
+}
+
+static void format_duration(char *buf, size_t len, double s)
+{
+    long total = (long)(s + 0.5);
+    snprintf(buf, len, "%ld:%02ld:%02ld", total / 3600, (total / 60) % 60, total % 60);
+}
+
+void fsi_progress_update(fsi_progress *p, double t, long windows, int force)
+{
+    double now = fsi_wall_seconds();
+    if (!force && now - p->wall_last < p->interval)
+        return;
+    double elapsed = now - p->wall_start;
+    double rate = (double)(windows - p->windows_last) / (now - p->wall_last + 1e-12);
+    double fraction = p->t_end > 0 ? t / p->t_end : 1.0;
+    char eta[32] = "--:--:--";
+    if (fraction > 0)
+        format_duration(eta, sizeof eta, elapsed * (1.0 - fraction) / fraction);
+    char spent[32];
+    format_duration(spent, sizeof spent, elapsed);
+    fprintf(p->out, "%st = %.6g s / %.6g s (%5.1f %%) | %ld windows, %.0f windows/s | elapsed %s, ETA %s%s",
+            p->tty ? "\r" : "", t, p->t_end, 100.0 * fraction, windows, rate, spent, eta,
+            p->tty ? "   " : "\n");
+    fflush(p->out);
+    p->wall_last = now;
+    p->windows_last = windows;
+}

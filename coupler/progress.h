@@ -1,0 +1,22 @@
+/* Progress line of a running case: simulated time, percent, windows per second and
+ * the estimated time left, printed at most every interval seconds of wall time. */
+#ifndef FSI_PROGRESS_H
+#define FSI_PROGRESS_H
+
+#include <stdio.h>
+
+typedef struct {
+    FILE *out;
+    double interval;
+    double t_end;
+    double wall_start;
+    double wall_last;
+    long windows_last;
+    int tty;
+} fsi_progress;
+
+void fsi_progress_init(fsi_progress *p, FILE *out, double interval, double t_end);
+/* Prints when the interval has passed (or always when force is set). */
+void fsi_progress_update(fsi_progress *p, double t, long windows, int force);
+
+#endif

@@ -1,0 +1,34 @@
+/* The [run] section: time, windows, output cadence and liveness (docs/cases.md). */
+#include "run_keys.h"
+
+static const fsi_key_spec run_keys[] = {
+    {"title", FSI_KEY_STRING, "-", "untitled", 0, 0, 0, NULL,
+     "Name of the scene, printed in the run log."},
+    {"end_time", FSI_KEY_REAL, "s", NULL, FSI_BOUND_MIN_OPEN, 0, 0, NULL,
+     "Simulated time at which the run ends."},
+    {"scheme", FSI_KEY_CHOICE, "-", "serial_staggered", 0, 0, 0, "serial_staggered",
+     "Coupling scheme: serial_staggered = solid state at t_k, fluid advances, fluid loads, "
+     "solid advances (sub-cycling inside the window)."},
+    {"max_window", FSI_KEY_REAL, "s", "1e-3", FSI_BOUND_MIN_OPEN, 0, 0, NULL,
+     "Largest coupling window; the window is the smallest of this and the participants' "
+     "proposed stable steps."},
+    {"output_interval", FSI_KEY_REAL, "s", "0.01", FSI_BOUND_MIN_OPEN, 0, 0, NULL,
+     "Simulated time between output frames; windows end exactly on frame times so fluid "
+     "and solid frames line up."},
+    {"probe_interval", FSI_KEY_REAL, "s", "1e-3", FSI_BOUND_MIN, 0, 0, NULL,
+     "Simulated time between rows of probes.csv; 0 writes a row after every window."},
+    {"heartbeat_interval", FSI_KEY_REAL, "s", "0.25", FSI_BOUND_MIN_OPEN | FSI_BOUND_MAX, 0,
+     2.0, NULL, "Wall time between liveness messages of every process."},
+    {"watchdog_timeout", FSI_KEY_REAL, "s", "3", FSI_BOUND_MIN_OPEN | FSI_BOUND_MAX, 0, 60.0,
+     NULL,
+     "A process not heard from for this long (wall time) is taken as dead or hung and the "
+     "run stops, naming it."},
+    {"register_timeout", FSI_KEY_REAL, "s", "30", FSI_BOUND_MIN_OPEN, 0, 0, NULL,
+     "Wall time the coupler waits for every participant to register."},
+    {"progress_interval", FSI_KEY_REAL, "s", "2", FSI_BOUND_MIN_OPEN, 0, 0, NULL,
+     "Wall time between progress lines."},
+};
+
+const fsi_key_table fsi_run_key_table = {
+    "run", "Time, coupling windows, output cadence and liveness of the whole run.", run_keys,
+    (int)(sizeof run_keys / sizeof run_keys[0])};

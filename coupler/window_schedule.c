@@ -1,0 +1,55 @@
+#include "window_schedule.h"
+
+#include <math.h>
+
+/* Event times closer than this fraction of a window count as hit: floating-point
+ * sums of windows must not leave slivers of 1e-17 s before an output time. */
+#define EVENT_TOLERANCE 1e-9
+
+void fsi_window_schedule_init(fsi_window_schedule *s, double t_end, double output_interval,
+                              double probe_interval, double max_window)
+{
+    s->t_end = t_end;
+    s->output_interval = output_interval;
+    s->probe_interval = probe_interval;
+    s->max_window = max_window;
+    s->next_frame = 1;
+    s->next_probe = 1;
+}
+
+static double frame_time(const fsi_window_schedule *s)
+{
+    return s->output_interval > 0 ? (double)s->next_frame * s->output_interval : INFINITY;
+}
+
+static double probe_time(const fsi_window_schedule *s)
+{
+    return s->probe_interval > 0 ? (double)s->next_probe * s->probe_interval : INFINITY;
+}
+
+fsi_window_plan fsi_window_schedule_next(fsi_window_schedule *s, double t, double dt_proposed)
+{
+    double dt = fmin(dt_proposed, s->max_window);
+    double t_event = fmin(s->t_end, fmin(frame_time(s), probe_time(s)));
+    fsi_window_plan plan = {dt, t + dt, -1, s->probe_interval <= 0, 0};
+    if (t + dt < t_event - EVENT_TOLERANCE * dt)
+        return plan;
+
+    plan.t_next = t_event;
+    plan.dt = t_event - t;
+    /* Several events can fall on one time (a frame that is also a probe time). */
+    double tol = EVENT_TOLERANCE * fmax(dt, 1e-300);
+    if (fabs(frame_time(s) - t_event) <= tol) {
+        plan.frame = (int)s->next_frame++;
+        plan.probe = 1;   /* probe rows line up with every frame */
+    }
+    while (probe_time(s) <= t_event + tol) {
+        s->next_probe++;
+        plan.probe = 1;
+    }
+    if (t_event >= s->t_end - tol) {
+        plan.last = 1;
+        plan.t_next = s->t_end;
+    }
+    return plan;
+}

@@ -1,0 +1,95 @@
+/* Example fluid participant: a linear dashpot (plus an optional spring) on every solid
+ * particle it is sent, F_y = -c v_y - k_f u_y, evaluated from the solid state at the
+ * start of the window as the serial-staggered scheme prescribes. */
+#include <math.h>
+#include <stdlib.h>
+
+#include "dim.h"
+#include "h5_output.h"
+#include "log.h"
+#include "participant.h"
+
+typedef struct {
+    int capacity;
+    double *force, *pressure;
+} loads;
+
+static int loads_reserve(loads *l, int n)
+{
+    if (n <= l->capacity)
+        return 0;
+    double *f = realloc(l->force, (size_t)n * FSI_DIM * sizeof(double));
+    if (f)
+        l->force = f;
+    double *pr = realloc(l->pressure, (size_t)n * sizeof(double));
+    if (pr)
+        l->pressure = pr;
+    if (!f || !pr)
+        return -1;
+    l->capacity = n;
+    return 0;
+}
+
+static void dashpot_loads(loads *l, const fsi_interface *solid, double damping,
+                          double stiffness)
+{
+    for (int i = 0; i < solid->n; i++) {
+        for (int d = 0; d < FSI_DIM; d++)
+            l->force[i * FSI_DIM + d] = 0.0;
+        double fy = -damping * solid->velocity[i * FSI_DIM + 1] -
+                    stiffness * solid->position[i * FSI_DIM + 1];
+        l->force[i * FSI_DIM + 1] = fy;
+        /* A pressure the way a fluid would report it: normal load per unit face. */
+        double face = pow(solid->volume[i], (FSI_DIM - 1.0) / FSI_DIM);
+        l->pressure[i] = -fy / face;
+    }
+}
+
+int main(void)
+{
+    fsi_participant *p = fsi_open(NULL, "fluid", NULL, 1e-3);
+    if (!p)
+        return FSI_EXIT_RUN_FAILURE;
+    const fsi_case *c = fsi_participant_case(p);
+    double damping = fsi_case_get_real(c, "fluid", "damping", 2.0);
+    double stiffness = fsi_case_get_real(c, "fluid", "stiffness", 0.0);
+    double time_step = fsi_case_get_real(c, "fluid", "time_step", 1e-3);
+    fsi_h5_writer *out = fsi_h5_create(fsi_output_dir(p), fsi_participant_name(p),
+                                       "linear_dashpot");
+    if (!out) {
+        fsi_abort(p, "cannot create the output file");
+        return FSI_EXIT_RUN_FAILURE;
+    }
+    int probe_fy = fsi_add_probe(p, "load0_fy");
+    fsi_timers timers = {0};
+    int t_loads = fsi_timer_index(&timers, "fluid_loads");
+    loads l = {0};
+    fsi_interface solid;
+
+    while (fsi_ongoing(p)) {
+        fsi_read_interface(p, &solid);
+        if (loads_reserve(&l, solid.n) != 0) {
+            fsi_abort(p, "out of memory for %d interface particles", solid.n);
+            break;
+        }
+        fsi_timer_start(&timers, t_loads);
+        dashpot_loads(&l, &solid, damping, stiffness);
+        fsi_timer_stop(&timers, t_loads);
+        fsi_interface reply = {solid.n, solid.id, NULL, NULL, NULL, NULL, l.pressure, l.force};
+        fsi_write_interface(p, &reply);
+        fsi_set_probe(p, probe_fy, solid.n > 0 ? l.force[1] : 0.0);
+        /* The frame at the window's end shows the loads applied during it. */
+        if (fsi_output_frame(p) >= 0 && solid.n > 0) {
+            fsi_h5_begin_frame(out, fsi_output_frame(p), fsi_time(p) + fsi_window(p),
+                               fsi_window_index(p), solid.n, solid.position);
+            fsi_h5_write_field_real(out, "force", l.force, FSI_DIM);
+            fsi_h5_write_field_real(out, "pressure", l.pressure, 1);
+            fsi_h5_end_frame(out);
+        }
+        fsi_advance(p, time_step);
+    }
+    fsi_h5_close(out);
+    free(l.force);
+    free(l.pressure);
+    return fsi_close(p, &timers);
+}

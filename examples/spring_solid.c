@@ -1,0 +1,170 @@
+/* Example solid participant: independent mass-spring oscillators, one per interface
+ * particle, each loaded by whatever the fluid returns. Small enough to read in one
+ * sitting; docs/participant_api.md walks through it. With the linear_dashpot fluid,
+ * particle i obeys m u'' + c u' + (k_i + k_f) u = 0, which bench/ and the tests
+ * compare against the closed-form solution. */
+#include <float.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "dim.h"
+#include "h5_output.h"
+#include "log.h"
+#include "participant.h"
+
+typedef struct {
+    int n;
+    double mass, time_step;
+    double *stiffness;       /* per particle [N/m] */
+    int32_t *id;
+    double *position, *velocity, *acceleration, *volume;   /* n * FSI_DIM, n */
+    double *load;            /* force from the fluid, held over the window */
+} springs;
+
+/* y displacement of particle i is its FSI_DIM-vector's component 1. */
+#define UY(s, i) ((s)->position[(i) * FSI_DIM + 1])
+#define VY(s, i) ((s)->velocity[(i) * FSI_DIM + 1])
+#define AY(s, i) ((s)->acceleration[(i) * FSI_DIM + 1])
+
+static int springs_init(springs *s, const fsi_case *c)
+{
+    s->n = (int)fsi_case_get_int(c, "solid", "particles", 100);
+    s->mass = fsi_case_get_real(c, "solid", "mass", 1.0);
+    s->time_step = fsi_case_get_real(c, "solid", "time_step", 1e-4);
+    double k = fsi_case_get_real(c, "solid", "stiffness", 100.0);
+    double spread = fsi_case_get_real(c, "solid", "stiffness_spread", 0.5);
+    double u0 = fsi_case_get_real(c, "solid", "initial_displacement", 0.01);
+    double spacing = fsi_case_get_real(c, "solid", "spacing", 0.01);
+    size_t n = (size_t)s->n, v = n * FSI_DIM;
+    s->stiffness = calloc(n, sizeof(double));
+    s->id = calloc(n, sizeof(int32_t));
+    s->position = calloc(v, sizeof(double));
+    s->velocity = calloc(v, sizeof(double));
+    s->acceleration = calloc(v, sizeof(double));
+    s->load = calloc(v, sizeof(double));
+    s->volume = calloc(n, sizeof(double));
+    if (!s->stiffness || !s->id || !s->position || !s->velocity || !s->acceleration ||
+        !s->load || !s->volume)
+        return -1;
+    for (int i = 0; i < s->n; i++) {
+        s->stiffness[i] = k * (1.0 + (s->n > 1 ? spread * i / (s->n - 1) : 0.0));
+        s->id[i] = i;
+        s->position[i * FSI_DIM] = i * spacing;
+        UY(s, i) = u0;
+        s->volume[i] = pow(spacing, FSI_DIM);
+        AY(s, i) = -s->stiffness[i] * u0 / s->mass;
+    }
+    return 0;
+}
+
+static void springs_free(springs *s)
+{
+    free(s->stiffness);
+    free(s->id);
+    free(s->position);
+    free(s->velocity);
+    free(s->acceleration);
+    free(s->load);
+    free(s->volume);
+}
+
+/* Loads arrive for the particles we sent, by id. */
+static int take_loads(springs *s, const fsi_interface *in)
+{
+    memset(s->load, 0, (size_t)s->n * FSI_DIM * sizeof(double));
+    for (int j = 0; j < in->n; j++) {
+        int i = in->id[j];
+        if (i < 0 || i >= s->n)
+            return -1;
+        for (int d = 0; d < FSI_DIM; d++)
+            s->load[i * FSI_DIM + d] = in->force[j * FSI_DIM + d];
+    }
+    return 0;
+}
+
+/* Velocity Verlet with the fluid load held constant over the window; sub-steps no
+ * larger than time_step (stable for time_step < 2 / omega_max). */
+static void springs_advance(springs *s, double dt)
+{
+    int substeps = (int)ceil(dt / s->time_step - 1e-12);
+    if (substeps < 1)
+        return;
+    double h = dt / substeps;
+    for (int step = 0; step < substeps; step++)
+        for (int i = 0; i < s->n; i++) {
+            VY(s, i) += 0.5 * h * AY(s, i);
+            UY(s, i) += h * VY(s, i);
+            AY(s, i) = (-s->stiffness[i] * UY(s, i) + s->load[i * FSI_DIM + 1]) / s->mass;
+            VY(s, i) += 0.5 * h * AY(s, i);
+        }
+}
+
+static int write_frame(fsi_h5_writer *out, const springs *s, int frame, double t, long window)
+{
+    if (fsi_h5_begin_frame(out, frame, t, window, s->n, s->position) != 0 ||
+        fsi_h5_write_field_real(out, "velocity", s->velocity, FSI_DIM) != 0 ||
+        fsi_h5_write_field_real(out, "acceleration", s->acceleration, FSI_DIM) != 0 ||
+        fsi_h5_write_field_real(out, "load", s->load, FSI_DIM) != 0 ||
+        fsi_h5_write_field_int(out, "id", s->id, 1) != 0)
+        return -1;
+    return fsi_h5_end_frame(out);
+}
+
+int main(void)
+{
+    fsi_participant *p = fsi_open(NULL, "solid", NULL, DBL_MAX);
+    if (!p)
+        return FSI_EXIT_RUN_FAILURE;
+    springs s = {0};
+    if (springs_init(&s, fsi_participant_case(p)) != 0) {
+        fsi_abort(p, "out of memory for %d particles", s.n);
+        return FSI_EXIT_RUN_FAILURE;
+    }
+    fsi_h5_writer *out = fsi_h5_create(fsi_output_dir(p), fsi_participant_name(p),
+                                       "spring_oscillators");
+    if (!out) {
+        fsi_abort(p, "cannot create the output file");
+        return FSI_EXIT_RUN_FAILURE;
+    }
+    fsi_h5_write_static_real(out, "stiffness", s.stiffness, s.n, 1);
+    int probe_uy = fsi_add_probe(p, "p0_uy");
+    int probe_vy = fsi_add_probe(p, "p0_vy");
+
+    fsi_timers timers = {0};
+    int t_solve = fsi_timer_index(&timers, "solid_advance");
+    int t_output = fsi_timer_index(&timers, "output");
+    fsi_interface state = {s.n, s.id, s.position, s.velocity, s.acceleration, s.volume,
+                           NULL, NULL};
+    fsi_interface loads;
+
+    while (fsi_ongoing(p)) {
+        double dt = fsi_window(p);
+        fsi_write_interface(p, &state);
+        fsi_read_interface(p, &loads);
+        if (take_loads(&s, &loads) != 0) {
+            fsi_abort(p, "load for an unknown particle id in window %d", fsi_window_index(p));
+            break;
+        }
+        fsi_timer_start(&timers, t_solve);
+        springs_advance(&s, dt);
+        fsi_timer_stop(&timers, t_solve);
+        if (!isfinite(UY(&s, 0))) {
+            fsi_abort(p, "particle 0 displacement is not finite at t = %.9g s (window %d)",
+                      fsi_time(p) + dt, fsi_window_index(p));
+            break;
+        }
+        fsi_set_probe(p, probe_uy, UY(&s, 0));
+        fsi_set_probe(p, probe_vy, VY(&s, 0));
+        if (fsi_output_frame(p) >= 0) {
+            fsi_timer_start(&timers, t_output);
+            write_frame(out, &s, fsi_output_frame(p), fsi_time(p) + dt, fsi_window_index(p));
+            fsi_timer_stop(&timers, t_output);
+        }
+        fsi_advance(p, DBL_MAX);    /* sub-cycling: the solid never limits the window */
+    }
+    fsi_h5_close(out);
+    springs_free(&s);
+    return fsi_close(p, &timers);
+}

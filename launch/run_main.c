@@ -1,0 +1,455 @@
+/* `fsi run`: checks a case, creates the output folder, isolates the run in a private
+ * network namespace, starts the coupler and the participants, and stops them all
+ * when one fails. Exit status: 0 success, 1 run failure, 2 bad input. */
+#define _GNU_SOURCE
+#include <errno.h>
+#include <fcntl.h>
+#include <dirent.h>
+#include <fnmatch.h>
+#include <hdf5.h>
+#include <lcm/lcm.h>
+#include <libgen.h>
+#include <limits.h>
+#include <signal.h>
+#include <stdarg.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <time.h>
+#include <unistd.h>
+
+#include "case_file.h"
+#include "log.h"
+#include "private_network.h"
+#include "protocol.h"
+#include "solver_registry.h"
+#include "supervisor.h"
+#include "timers.h"
+
+#define MAX_SETS 256
+
+typedef struct {
+    const char *case_path;
+    const char *out_dir;
+    const char *sets[MAX_SETS];
+    int n_sets;
+    int threads;           /* 0: from the case */
+    int log_traffic;
+    const char *lcm_url;   /* NULL: private namespace with the default URL */
+    int force;
+    int check_only;
+} run_options;
+
+typedef struct {
+    const char *role;
+    char program[PATH_MAX];
+    int threads;
+} participant_plan;
+
+static volatile int interrupted;
+
+static void on_signal(int sig)
+{
+    (void)sig;
+    interrupted = 1;
+}
+
+static void usage(FILE *out)
+{
+    fprintf(out,
+            "usage: fsi run CASE [--out DIR] [--set section.key=value ...] [--threads N]\n"
+            "               [--log-traffic] [--lcm-url URL] [--force] [--check]\n"
+            "  --out DIR         output folder (default: out/<case name>)\n"
+            "  --set s.k=v       override a case key (repeatable)\n"
+            "  --threads N       OpenMP threads of every participant\n"
+            "  --log-traffic     record every bus message to DIR/traffic.lcmlog\n"
+            "  --lcm-url URL     use this LCM network instead of a private namespace\n"
+            "  --force           replace the results of an earlier run in DIR\n"
+            "  --check           only check the case, run nothing\n");
+}
+
+static int parse_options(int argc, char **argv, run_options *o)
+{
+    for (int i = 1; i < argc; i++) {
+        const char *a = argv[i];
+        int has_value = i + 1 < argc;
+        if (strcmp(a, "--out") == 0 && has_value)
+            o->out_dir = argv[++i];
+        else if (strcmp(a, "--set") == 0 && has_value && o->n_sets < MAX_SETS)
+            o->sets[o->n_sets++] = argv[++i];
+        else if (strcmp(a, "--threads") == 0 && has_value) {
+            char *end;
+            long n = strtol(argv[++i], &end, 10);
+            if (*end || n < 1 || n > 1024) {
+                fprintf(stderr, "fsi run: --threads needs a whole number >= 1, not '%s'\n",
+                        argv[i]);
+                return -1;
+            }
+            o->threads = (int)n;
+        } else if (strcmp(a, "--log-traffic") == 0)
+            o->log_traffic = 1;
+        else if (strcmp(a, "--lcm-url") == 0 && has_value)
+            o->lcm_url = argv[++i];
+        else if (strcmp(a, "--force") == 0)
+            o->force = 1;
+        else if (strcmp(a, "--check") == 0)
+            o->check_only = 1;
+        else if (strcmp(a, "-h") == 0 || strcmp(a, "--help") == 0) {
+            usage(stdout);
+            exit(FSI_EXIT_OK);
+        } else if (a[0] != '-' && !o->case_path)
+            o->case_path = a;
+        else {
+            fprintf(stderr, "fsi run: unknown or incomplete option '%s'\n", a);
+            usage(stderr);
+            return -1;
+        }
+    }
+    if (!o->case_path) {
+        usage(stderr);
+        return -1;
+    }
+    return 0;
+}
+
+static void bin_dir(char *dir, size_t len)
+{
+    char self[PATH_MAX];
+    ssize_t n = readlink("/proc/self/exe", self, sizeof self - 1);
+    self[n > 0 ? n : 0] = '\0';
+    snprintf(dir, len, "%s", dirname(self));
+}
+
+/* Finds each participant's program; every problem is bad input (exit 2). */
+static int plan_participants(const fsi_case *c, const run_options *o, participant_plan *plan,
+                             int *n_plan)
+{
+    const fsi_case_schema *schema = fsi_project_schema();
+    char bin[PATH_MAX];
+    bin_dir(bin, sizeof bin);
+    int errors = 0;
+    *n_plan = 0;
+    for (int r = 0; r < schema->n_roles; r++) {
+        const char *role = schema->roles[r];
+        if (!fsi_case_has_section(c, role))
+            continue;
+        participant_plan *p = &plan[(*n_plan)++];
+        p->role = role;
+        p->threads = o->threads ? o->threads : (int)fsi_case_get_int(c, role, "threads", 1);
+        const char *solver = fsi_case_get(c, role, "solver");
+        const fsi_solver_spec *spec = fsi_find_solver(solver);
+        if (spec)
+            snprintf(p->program, sizeof p->program, "%s/%s", bin, spec->executable);
+        else
+            snprintf(p->program, sizeof p->program, "%s", fsi_case_get(c, role, "executable"));
+        if (access(p->program, X_OK) != 0) {
+            fprintf(stderr, "%s: [%s] %s: program '%s' is not executable: %s\n",
+                    fsi_case_path(c), role, spec ? "solver" : "executable", p->program,
+                    strerror(errno));
+            errors++;
+        }
+    }
+    if (*n_plan == 0) {
+        fprintf(stderr, "%s: the case has neither a [fluid] nor a [solid] section\n",
+                fsi_case_path(c));
+        errors++;
+    }
+    return errors ? -1 : 0;
+}
+
+static int make_dirs(const char *path)
+{
+    char buf[PATH_MAX];
+    snprintf(buf, sizeof buf, "%s", path);
+    for (char *p = buf + 1; *p; p++)
+        if (*p == '/') {
+            *p = '\0';
+            if (mkdir(buf, 0755) != 0 && errno != EEXIST)
+                return -1;
+            *p = '/';
+        }
+    return mkdir(buf, 0755) != 0 && errno != EEXIST ? -1 : 0;
+}
+
+/* What a run writes; --force removes only these, never anything else in DIR. */
+static int is_run_output(const char *name)
+{
+    static const char *const patterns[] = {"*.h5", "*.xmf", "*.xmf.tmp", "*.log", "*.png",
+                                           "probes.csv", "case.resolved.ini", "traffic.lcmlog",
+                                           "*.csv"};
+    for (size_t i = 0; i < sizeof patterns / sizeof patterns[0]; i++)
+        if (fnmatch(patterns[i], name, 0) == 0)
+            return 1;
+    return 0;
+}
+
+/* Refuses to mix two runs' results in one folder unless --force. */
+static int prepare_output_dir(const char *dir, int force)
+{
+    DIR *d = opendir(dir);
+    if (!d)
+        return errno == ENOENT ? 0 : -1;
+    int earlier = 0;
+    struct dirent *e;
+    while ((e = readdir(d))) {
+        if (!is_run_output(e->d_name))
+            continue;
+        if (!force) {
+            earlier = 1;
+            break;
+        }
+        char path[PATH_MAX];
+        snprintf(path, sizeof path, "%s/%s", dir, e->d_name);
+        unlink(path);
+    }
+    closedir(d);
+    if (earlier) {
+        fprintf(stderr, "fsi run: %s holds results of an earlier run; use --force to replace "
+                        "them or --out to choose another folder\n", dir);
+        return -1;
+    }
+    return 0;
+}
+
+static void default_out_dir(const char *case_path, char *out, size_t len)
+{
+    char copy[PATH_MAX];
+    snprintf(copy, sizeof copy, "%s", case_path);
+    char *base = basename(copy);
+    char *dot = strrchr(base, '.');
+    if (dot && dot != base)
+        *dot = '\0';
+    snprintf(out, len, "out/%s", base);
+}
+
+static int64_t new_run_id(void)
+{
+    uint64_t id = 0;
+    int fd = open("/dev/urandom", O_RDONLY);
+    if (fd < 0 || read(fd, &id, sizeof id) != (ssize_t)sizeof id)
+        id = (uint64_t)time(NULL) ^ ((uint64_t)getpid() << 32);
+    if (fd >= 0)
+        close(fd);
+    return (int64_t)(id >> 1) | 1;   /* positive and never 0 */
+}
+
+static void write_log_header(const char *path, int argc, char **argv, int64_t run_id,
+                             const char *url, int isolated, const fsi_case *c)
+{
+    FILE *log = fopen(path, "w");
+    if (!log)
+        return;
+    time_t now = time(NULL);
+    char date[64];
+    strftime(date, sizeof date, "%Y-%m-%dT%H:%M:%SZ", gmtime(&now));
+    unsigned h5maj, h5min, h5rel;
+    H5get_libversion(&h5maj, &h5min, &h5rel);
+    char host[256] = "";
+    gethostname(host, sizeof host - 1);
+    fprintf(log, "# fsi run log\ndate = %s\nhost = %s\ncommand = fsi run", date, host);
+    for (int i = 1; i < argc; i++)
+        fprintf(log, " %s", argv[i]);
+    fprintf(log,
+            "\nfsi_version = %s\nprotocol_version = %d\nlcm_version = %d.%d.%d\n"
+            "hdf5_version = %u.%u.%u\ncompiler = gcc %s\ndimension = %d\nrun_id = %lld\n"
+            "lcm_url = %s\nisolation = %s\n",
+            FSI_VERSION, FSI_PROTOCOL_VERSION, LCM_MAJOR_VERSION, LCM_MINOR_VERSION,
+            LCM_MICRO_VERSION, h5maj, h5min, h5rel, __VERSION__, FSI_DIM, (long long)run_id,
+            url, isolated ? "private network namespace" : "user-given LCM URL");
+    const char *drop = getenv("FSI_TEST_DROP_FRACTION");
+    if (drop && *drop)
+        fprintf(log, "test_drop_fraction = %s (seed %s)\n", drop,
+                getenv("FSI_TEST_DROP_SEED") ? getenv("FSI_TEST_DROP_SEED") : "1");
+    fprintf(log, "\n# resolved case\n");
+    fsi_case_write_resolved(c, log);
+    fclose(log);
+}
+
+static void append_log(const char *path, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
+
+static void append_log(const char *path, const char *fmt, ...)
+{
+    FILE *log = fopen(path, "a");
+    if (!log)
+        return;
+    va_list ap;
+    va_start(ap, fmt);
+    vfprintf(log, fmt, ap);
+    va_end(ap);
+    fclose(log);
+}
+
+static void print_log_tail(const char *path)
+{
+    FILE *f = fopen(path, "r");
+    if (!f)
+        return;
+    char lines[10][512];
+    int n = 0;
+    while (fgets(lines[n % 10], sizeof lines[0], f))
+        n++;
+    fclose(f);
+    if (n == 0)
+        return;
+    fprintf(stderr, "--- last lines of %s ---\n", path);
+    for (int i = n > 10 ? n - 10 : 0; i < n; i++)
+        fputs(lines[i % 10], stderr);
+}
+
+static int wait_for_file(const char *path, double seconds)
+{
+    double deadline = fsi_wall_seconds() + seconds;
+    while (access(path, F_OK) != 0) {
+        if (fsi_wall_seconds() > deadline)
+            return -1;
+        usleep(10000);
+    }
+    return 0;
+}
+
+static int start_processes(fsi_supervisor *sup, const char *out, const char *url,
+                           int log_traffic, participant_plan *plan, int n_plan)
+{
+    char bin[PATH_MAX], program[PATH_MAX + 32], path[PATH_MAX + 32];
+    bin_dir(bin, sizeof bin);
+    if (log_traffic) {
+        snprintf(path, sizeof path, "%s/traffic.lcmlog", out);
+        char url_opt[600];
+        snprintf(url_opt, sizeof url_opt, "--lcm-url=%s", url);
+        char *argv[] = {"lcm-logger", "-q", "-f", "--flush-interval=50", url_opt, path, NULL};
+        char logger_log[PATH_MAX + 32];
+        snprintf(logger_log, sizeof logger_log, "%s/lcm-logger.log", out);
+        if (fsi_supervisor_start(sup, "lcm-logger", "/usr/bin/lcm-logger", argv, NULL,
+                                 logger_log, 0, 1) != 0 ||
+            wait_for_file(path, 5.0) != 0) {
+            fsi_error("lcm-logger did not start (see %s)", logger_log);
+            return -1;
+        }
+    }
+    snprintf(program, sizeof program, "%s/fsi-coupler", bin);
+    char *coupler_argv[] = {"fsi-coupler", NULL};
+    char *coupler_env[] = {"FSI_PARTICIPANT=" FSI_COUPLER_NAME, NULL};
+    if (fsi_supervisor_start(sup, FSI_COUPLER_NAME, program, coupler_argv, coupler_env, NULL,
+                             1, 0) != 0)
+        return -1;
+    for (int i = 0; i < n_plan; i++) {
+        static char env_name[8][80], env_threads[8][64];
+        snprintf(env_name[i], sizeof env_name[i], "FSI_PARTICIPANT=%s", plan[i].role);
+        snprintf(env_threads[i], sizeof env_threads[i], "OMP_NUM_THREADS=%d", plan[i].threads);
+        char *env[] = {env_name[i], env_threads[i], NULL};
+        char *argv[] = {plan[i].program, NULL};
+        snprintf(path, sizeof path, "%s/%s.log", out, plan[i].role);
+        if (fsi_supervisor_start(sup, plan[i].role, plan[i].program, argv, env, path, 0, 0) != 0)
+            return -1;
+    }
+    return 0;
+}
+
+int main(int argc, char **argv)
+{
+    fsi_log_set_name("fsi run");
+    run_options o = {0};
+    if (parse_options(argc, argv, &o) != 0)
+        return FSI_EXIT_BAD_INPUT;
+
+    fsi_case *c = fsi_case_read(o.case_path, stderr);
+    if (!c)
+        return FSI_EXIT_BAD_INPUT;
+    int errors = 0;
+    for (int i = 0; i < o.n_sets; i++)
+        errors += fsi_case_override(c, o.sets[i], stderr) != 0;
+    errors += fsi_case_validate(c, fsi_project_schema(), stderr);
+    participant_plan plan[8];
+    int n_plan = 0;
+    if (errors == 0 && plan_participants(c, &o, plan, &n_plan) != 0)
+        errors++;
+    if (errors) {
+        fprintf(stderr, "fsi run: %s has %d error%s; nothing was run\n", o.case_path, errors,
+                errors == 1 ? "" : "s");
+        fsi_case_free(c);
+        return FSI_EXIT_BAD_INPUT;
+    }
+    if (o.check_only) {
+        printf("%s: valid (%d participant%s)\n", o.case_path, n_plan, n_plan == 1 ? "" : "s");
+        fsi_case_free(c);
+        return FSI_EXIT_OK;
+    }
+
+    char out[PATH_MAX], out_abs[PATH_MAX], path[PATH_MAX + 32];
+    if (o.out_dir)
+        snprintf(out, sizeof out, "%s", o.out_dir);
+    else
+        default_out_dir(o.case_path, out, sizeof out);
+    if (prepare_output_dir(out, o.force) != 0) {
+        fsi_case_free(c);
+        return FSI_EXIT_BAD_INPUT;
+    }
+    if (make_dirs(out) != 0 || !realpath(out, out_abs)) {
+        fprintf(stderr, "fsi run: cannot create the output folder %s: %s\n", out, strerror(errno));
+        fsi_case_free(c);
+        return FSI_EXIT_BAD_INPUT;
+    }
+
+    snprintf(path, sizeof path, "%s/case.resolved.ini", out_abs);
+    FILE *resolved = fopen(path, "w");
+    if (!resolved) {
+        fprintf(stderr, "fsi run: cannot write %s\n", path);
+        fsi_case_free(c);
+        return FSI_EXIT_RUN_FAILURE;
+    }
+    fsi_case_write_resolved(c, resolved);
+    fclose(resolved);
+
+    int isolated = o.lcm_url == NULL;
+    const char *url = isolated ? FSI_DEFAULT_LCM_URL : o.lcm_url;
+    int64_t run_id = new_run_id();
+    char log_path[PATH_MAX + 32];
+    snprintf(log_path, sizeof log_path, "%s/run.log", out_abs);
+    write_log_header(log_path, argc, argv, run_id, url, isolated, c);
+    fsi_case_free(c);
+
+    if (isolated && fsi_enter_private_network() != 0) {
+        append_log(log_path, "\nexit = failure: no private network namespace\n");
+        return FSI_EXIT_RUN_FAILURE;
+    }
+    char env_case[PATH_MAX + 16], env_out[PATH_MAX + 16], env_url[600], env_id[64];
+    snprintf(env_case, sizeof env_case, "FSI_CASE=%s", path);
+    snprintf(env_out, sizeof env_out, "FSI_OUT=%s", out_abs);
+    snprintf(env_url, sizeof env_url, "FSI_LCM_URL=%s", url);
+    snprintf(env_id, sizeof env_id, "FSI_RUN_ID=%lld", (long long)run_id);
+    putenv(env_case);
+    putenv(env_out);
+    putenv(env_url);
+    putenv(env_id);
+
+    struct sigaction sa = {0};
+    sa.sa_handler = on_signal;
+    sigaction(SIGINT, &sa, NULL);
+    sigaction(SIGTERM, &sa, NULL);
+
+    static fsi_supervisor sup;
+    int failed = start_processes(&sup, out_abs, url, o.log_traffic, plan, n_plan) != 0;
+    if (failed)
+        snprintf(sup.failure, sizeof sup.failure, "could not start every process");
+    /* Even after a failed start, wait: whatever did start must be stopped and reaped. */
+    int rc = fsi_supervisor_wait(&sup, &interrupted);
+    failed = failed || rc != 0;
+    fsi_supervisor_stop_helpers(&sup);
+
+    double wall = fsi_wall_seconds() - sup.started;
+    if (failed) {
+        append_log(log_path, "\nexit = failure: %s\n", sup.failure);
+        fprintf(stderr, "fsi run: run failed: %s\n", sup.failure);
+        for (int i = 0; i < n_plan; i++) {
+            snprintf(path, sizeof path, "%s/%s.log", out_abs, plan[i].role);
+            print_log_tail(path);
+        }
+        fprintf(stderr, "fsi run: output written so far is in %s\n", out_abs);
+        return FSI_EXIT_RUN_FAILURE;
+    }
+    append_log(log_path, "\nexit = ok (%.2f s wall)\n", wall);
+    printf("fsi run: finished in %.1f s; output in %s\n", wall, out_abs);
+    return FSI_EXIT_OK;
+}

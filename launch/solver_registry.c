@@ -1,0 +1,48 @@
+#include "solver_registry.h"
+
+#include <string.h>
+
+#include "example_keys.h"
+#include "run_keys.h"
+
+static const fsi_key_spec participant_keys[] = {
+    {"solver", FSI_KEY_STRING, "-", NULL, 0, 0, 0, NULL,
+     "Which solver plays this part (see the solver tables below), or 'external' for a "
+     "program of your own that speaks the protocol (docs/participant_api.md)."},
+    {"executable", FSI_KEY_STRING, "-", "", 0, 0, 0, NULL,
+     "Program to start for solver = external (a path); ignored otherwise."},
+    {"threads", FSI_KEY_INT, "-", "1", FSI_BOUND_MIN, 1, 0, NULL,
+     "OpenMP threads of this participant (`fsi run --threads N` overrides it)."},
+};
+
+static const fsi_key_table participant_table = {
+    "participant", "Keys every participant section has.", participant_keys,
+    (int)(sizeof participant_keys / sizeof participant_keys[0])};
+
+static const char *const roles[] = {"fluid", "solid"};
+
+static const fsi_solver_spec solvers[] = {
+    {"spring_oscillators", "solid", "fsi-spring-solid",
+     "Example solid of independent mass-spring oscillators (examples/spring_solid.c).",
+     &fsi_spring_solid_keys},
+    {"linear_dashpot", "fluid", "fsi-dashpot-fluid",
+     "Example fluid: a linear dashpot on every solid particle (examples/dashpot_fluid.c).",
+     &fsi_dashpot_fluid_keys},
+};
+
+static const fsi_case_schema schema = {
+    &fsi_run_key_table, 1, &participant_table, roles, 2, solvers,
+    (int)(sizeof solvers / sizeof solvers[0])};
+
+const fsi_case_schema *fsi_project_schema(void)
+{
+    return &schema;
+}
+
+const fsi_solver_spec *fsi_find_solver(const char *name)
+{
+    for (size_t i = 0; i < sizeof solvers / sizeof solvers[0]; i++)
+        if (strcmp(solvers[i].name, name) == 0)
+            return &solvers[i];
+    return NULL;
+}
