@@ -187,11 +187,15 @@ static int is_prefix(const char *prefix, const char *s)
 }
 
 /* The known name the user most likely meant, or NULL. Short names get a
- * tighter limit, or "dt" would suggest every other two-letter key. */
+ * tighter limit, and a name is never "close" to one it shares no letter
+ * position with, or "c" would suggest every one-letter choice. */
 static const char *closest_name(const char *typed, const name_list *known)
 {
+    for (int i = 0; i < known->n; i++)      /* keys are case-sensitive; people forget */
+        if (ascii_equal_nocase(typed, known->items[i]))
+            return known->items[i];
     size_t lt = strlen(typed);
-    size_t limit = lt <= 3 ? 1 : 2;
+    size_t limit = lt <= 4 ? 1 : 2;
     const char *best = NULL;
     size_t best_d = limit + 1;
     for (int i = 0; i < known->n; i++) {
@@ -199,7 +203,7 @@ static const char *closest_name(const char *typed, const name_list *known)
         if ((lk > lt ? lk - lt : lt - lk) > limit)
             continue;               /* cannot be close enough; skip the O(n*m) work */
         size_t d = levenshtein(typed, known->items[i]);
-        if (d < best_d) {
+        if (d < best_d && d < (lt < lk ? lt : lk)) {
             best_d = d;
             best = known->items[i];
         }
@@ -222,7 +226,7 @@ typedef enum { FROM_FILE, FROM_SET, FROM_DEFAULT } origin_kind;
 /* Where a value or section came from, for messages and the resolved file. */
 typedef struct {
     origin_kind kind;
-    int line;           /* FROM_FILE */
+    int line;           /* FROM_FILE: the line; FROM_SET: 1 for the first --set, ... */
     char *set_text;     /* FROM_SET: the assignment as the user typed it */
 } origin;
 
@@ -243,6 +247,7 @@ struct fsi_case {
     char *path;
     section **sections;
     int n_sections, cap_sections;
+    int n_overrides;
 };
 
 static origin origin_copy(const origin *o)
@@ -415,7 +420,7 @@ static void report(diag_list *d, const fsi_case *c, const origin *o, const char 
     free(where);
     free(msg);
     int rank = o->kind == FROM_FILE ? RANK_LINE : o->kind == FROM_SET ? RANK_SET : RANK_FILE;
-    diag_add(d, rank, o->kind == FROM_FILE ? o->line : 0, text);
+    diag_add(d, rank, o->line, text);
 }
 
 /* ---------------------------------------------------------------- reading */
@@ -590,6 +595,7 @@ static fsi_case *case_new(const char *path)
     c->path = xstrdup(path);
     c->sections = NULL;
     c->n_sections = c->cap_sections = 0;
+    c->n_overrides = 0;
     return c;
 }
 
@@ -604,7 +610,9 @@ fsi_case *fsi_case_read(const char *path, FILE *errors)
     fsi_case *c = case_new(path);
     diag_list diags = { 0 };
     read_state st = { .file = f, .c = c, .diags = &diags };
+    errno = 0;
     int r = ini_parse_stream(case_reader, &st, on_key, &st);
+    int read_errno = errno;
     settle_pending_line(&st);
     /* Belt and braces: every line inih rejects should already be reported. */
     if (r > 0 && !diag_has_line(&diags, r))
@@ -613,7 +621,8 @@ fsi_case *fsi_case_read(const char *path, FILE *errors)
     if (r < 0)
         report(&diags, c, &whole, NULL, NULL, "the INI parser failed (inih error %d)", r);
     if (ferror(f))
-        report(&diags, c, &whole, NULL, NULL, "read error after line %d", st.lineno);
+        report(&diags, c, &whole, NULL, NULL, "cannot read case file after line %d: %s",
+               st.lineno, strerror(read_errno ? read_errno : EIO));
     fclose(f);
     free(st.buf);
     if (diag_flush(&diags, errors) > 0) {
@@ -680,7 +689,7 @@ int fsi_case_override(fsi_case *c, const char *assignment, FILE *errors)
             fprintf(errors, "--set %s: %s\n", assignment, why);
         rc = -1;
     } else {
-        origin from = { FROM_SET, 0, (char *)assignment };
+        origin from = { FROM_SET, ++c->n_overrides, (char *)assignment };
         section *s = find_section(c, sec);
         if (!s)
             s = add_section(c, sec, &from);
@@ -805,42 +814,59 @@ static char *parse_vector(const char *text, double *out)
     return NULL;
 }
 
-/* Choices are '|'-separated words; blanks around them are not part of the word. */
+/* Splits a copy of a choices string ("a|b") into words without surrounding
+ * blanks; the words point into the returned buffer, freed by the caller. */
+static char *choice_words(const char *choices, name_list *words)
+{
+    char *buf = xstrdup(choices ? choices : "");
+    for (char *w = buf;;) {
+        char *bar = strchr(w, '|');
+        if (bar)
+            *bar = '\0';
+        char *end = w + strlen(w);
+        while (end > w && isspace((unsigned char)end[-1]))
+            *--end = '\0';
+        names_add(words, skip_blanks(w));
+        if (!bar)
+            return buf;
+        w = bar + 1;
+    }
+}
+
 static int choice_matches(const char *choices, const char *value)
 {
-    const char *p = choices ? choices : "";
-    for (;;) {
-        const char *bar = strchr(p, '|');
-        size_t n = bar ? (size_t)(bar - p) : strlen(p);
-        char *word = trimmed_copy(p, n);
-        int match = strcmp(word, value) == 0;
-        free(word);
-        if (match)
-            return 1;
-        if (!bar)
-            return 0;
-        p = bar + 1;
-    }
+    name_list words = { 0 };
+    char *buf = choice_words(choices, &words);
+    int match = 0;
+    for (int i = 0; i < words.n; i++)
+        match |= strcmp(words.items[i], value) == 0;
+    names_free(&words);
+    free(buf);
+    return match;
 }
 
 static char *choices_text(const char *choices)
 {
-    const char *p = choices ? choices : "";
-    size_t cap = 2 * strlen(p) + 1;
-    char *out = xrealloc(NULL, cap);
-    out[0] = '\0';
-    for (;;) {
-        const char *bar = strchr(p, '|');
-        size_t n = bar ? (size_t)(bar - p) : strlen(p);
-        char *word = trimmed_copy(p, n);
-        if (out[0])
-            strcat(out, ", ");
-        strcat(out, word);
-        free(word);
-        if (!bar)
-            return out;
-        p = bar + 1;
-    }
+    name_list words = { 0 };
+    char *buf = choice_words(choices, &words);
+    char *text = names_join(&words, ", ");
+    names_free(&words);
+    free(buf);
+    return text;
+}
+
+static char *choice_problem(const char *choices, const char *text)
+{
+    name_list words = { 0 };
+    char *buf = choice_words(choices, &words);
+    char *list = names_join(&words, ", ");
+    const char *guess = closest_name(text, &words);
+    char *msg = guess ? xasprintf("'%s' is not one of: %s (did you mean '%s'?)", text, list, guess)
+                      : xasprintf("'%s' is not one of: %s", text, list);
+    free(list);
+    names_free(&words);
+    free(buf);
+    return msg;
 }
 
 static char *bound_problem(const fsi_key_spec *k, const char *text, double x)
@@ -894,10 +920,7 @@ static char *value_problem(const fsi_key_spec *k, const char *text)
     case FSI_KEY_CHOICE: {
         if (choice_matches(k->choices, text))
             return NULL;
-        char *list = choices_text(k->choices);
-        char *msg = xasprintf("'%s' is not one of: %s", text, list);
-        free(list);
-        return msg;
+        return choice_problem(k->choices, text);
     }
     case FSI_KEY_VECTOR: {
         double v[FSI_DIM];
@@ -1247,8 +1270,8 @@ static void write_entry(const fsi_case *c, const entry *e, FILE *out)
 
 void fsi_case_write_resolved(const fsi_case *c, FILE *out)
 {
-    fprintf(out, "# Resolved case read from %s: every key with its value; the comment\n"
-                 "# after each says where it came from.\n", c->path);
+    fprintf(out, "# Resolved case read from %s: every key with its value and, in a\n"
+                 "# comment, where the value came from.\n", c->path);
     for (int i = 0; i < c->n_sections; i++) {
         const section *s = c->sections[i];
         fprintf(out, "\n[%s]\n", s->name);

@@ -23,7 +23,7 @@
 #define MAX_PROBES 64
 #define MAX_PEERS 8
 /* Re-requests of a missing message back off from the first to the last interval. */
-#define REQUEST_FIRST_S 0.01
+#define REQUEST_FIRST_S 0.003
 #define REQUEST_LAST_S 0.5
 
 /* The other side's interface data, tagged with the window it belongs to. */
@@ -226,7 +226,7 @@ static void on_message(fsi_msg_type type, const void *msg, void *user)
 }
 
 /* The run cannot go on for this process: say why and leave (output is between frames). */
-static void die_with_run(fsi_participant *p, const char *why)
+static void die_with_run(const char *why)
 {
     fsi_error("%s", why);
     exit(FSI_EXIT_RUN_FAILURE);
@@ -237,14 +237,14 @@ static void check_run_alive(fsi_participant *p)
     char why[1024];
     if (p->aborted) {
         snprintf(why, sizeof why, "run aborted by %s: %s", p->abort_culprit, p->abort_reason);
-        die_with_run(p, why);
+        die_with_run(why);
     }
     double silent = fsi_wall_seconds() - p->coupler_last_heard;
     if (silent > p->env.watchdog_timeout) {
         snprintf(why, sizeof why,
                  "coupler not heard for %.1f s (window %d, t = %.6g s): stopping", silent,
                  p->window, p->t);
-        die_with_run(p, why);
+        die_with_run(why);
     }
 }
 
@@ -267,7 +267,7 @@ static void wait_for(fsi_participant *p, ready_fn ready, request_fn request)
             next_request = now + interval;
         }
         if (fsi_bus_poll(p->bus, next_request - now) < 0)
-            die_with_run(p, "LCM transport failed while waiting");
+            die_with_run("LCM transport failed while waiting");
     }
     fsi_timer_stop(&p->lib_timers, p->t_wait);
 }

@@ -28,7 +28,7 @@
 #include "window_schedule.h"
 
 #define MAX_PARTICIPANTS 2
-#define REQUEST_FIRST_S 0.01
+#define REQUEST_FIRST_S 0.003
 #define REQUEST_LAST_S 0.5
 #define POLL_SLICE_S 0.05
 
@@ -381,7 +381,7 @@ static void write_bus_counters(FILE *log, const char *who, fsi_bus_counters b)
  * participant, and the exit reason. */
 static void write_summary(coupler *c)
 {
-    char path[PATH_MAX];
+    char path[PATH_MAX + 16];
     snprintf(path, sizeof path, "%s/run.log", c->env.out_dir);
     FILE *log = fopen(path, "a");
     if (!log) {

@@ -140,10 +140,14 @@ static int plan_participants(const fsi_case *c, const run_options *o, participan
         p->threads = o->threads ? o->threads : (int)fsi_case_get_int(c, role, "threads", 1);
         const char *solver = fsi_case_get(c, role, "solver");
         const fsi_solver_spec *spec = fsi_find_solver(solver);
-        if (spec)
-            snprintf(p->program, sizeof p->program, "%s/%s", bin, spec->executable);
-        else
-            snprintf(p->program, sizeof p->program, "%s", fsi_case_get(c, role, "executable"));
+        int len = spec ? snprintf(p->program, sizeof p->program, "%s/%s", bin, spec->executable)
+                       : snprintf(p->program, sizeof p->program, "%s",
+                                  fsi_case_get(c, role, "executable"));
+        if (len >= (int)sizeof p->program) {
+            fprintf(stderr, "%s: [%s] program path is too long\n", fsi_case_path(c), role);
+            errors++;
+            continue;
+        }
         if (access(p->program, X_OK) != 0) {
             fprintf(stderr, "%s: [%s] %s: program '%s' is not executable: %s\n",
                     fsi_case_path(c), role, spec ? "solver" : "executable", p->program,
@@ -200,7 +204,7 @@ static int prepare_output_dir(const char *dir, int force)
             earlier = 1;
             break;
         }
-        char path[PATH_MAX];
+        char path[PATH_MAX + 256];
         snprintf(path, sizeof path, "%s/%s", dir, e->d_name);
         unlink(path);
     }
@@ -414,7 +418,7 @@ int main(int argc, char **argv)
         append_log(log_path, "\nexit = failure: no private network namespace\n");
         return FSI_EXIT_RUN_FAILURE;
     }
-    char env_case[PATH_MAX + 16], env_out[PATH_MAX + 16], env_url[600], env_id[64];
+    char env_case[PATH_MAX + 64], env_out[PATH_MAX + 16], env_url[600], env_id[64];
     snprintf(env_case, sizeof env_case, "FSI_CASE=%s", path);
     snprintf(env_out, sizeof env_out, "FSI_OUT=%s", out_abs);
     snprintf(env_url, sizeof env_url, "FSI_LCM_URL=%s", url);

@@ -1,7 +1,7 @@
 /* Unit test of core/case_file.c: reading, --set overrides, validation against a
  * small schema built here, error messages (text and line), defaults, the resolved
  * file round trip and the Markdown reference. Exit 0 = pass; every failed check
- * is printed. Scratch files go to $FSI_TEST_TMP (default /tmp/fsi_test_case). */
+ * is printed. Scratch files go to $FSI_TEST_TMP/case_file (default /tmp/fsi_test_case). */
 #include "case_file.h"
 #include "dim.h"
 
@@ -52,7 +52,7 @@ static const fsi_key_spec run_keys[] = {
 };
 
 static const fsi_key_spec output_keys[] = {
-    { "format", FSI_KEY_CHOICE, "-", "h5", 0, 0, 0, NULL, "h5|csv", "File format." },
+    { "format", FSI_KEY_CHOICE, "-", "h5", 0, 0, 0, "h5|csv", "File format." },
 };
 
 static const fsi_key_table sections[] = {
@@ -397,7 +397,7 @@ static void test_bad_values(void)
     EXPECT_AT(msgs, path, text, "relaxation", "[run] relaxation: 1.5 must be <= 1");
     EXPECT_AT(msgs, path, text, "stiffness", "[solid] stiffness: '1e999' is out of range");
     EXPECT_AT(msgs, path, text, "particles", "[solid] particles: '2.5' is not a whole number");
-    EXPECT_AT(msgs, path, text, "mode", "[solid] mode: 'c' is not one of: a, b");
+    EXPECT_AT(msgs, path, text, "mode", "[solid] mode: 'c' is not one of: a, b\n");
     EXPECT_AT(msgs, path, text, "damping", "[fluid] damping: value is empty");
     EXPECT_AT(msgs, path, text, "format", "[output] format: 'nan' is not one of: h5, csv");
     fsi_case_free(c);
@@ -406,11 +406,13 @@ static void test_bad_values(void)
 
     static const char text2[] =
         "[run]\nend_time = inf\noutput_interval = nan\nrelaxation = -0\n"
-        "[solid]\nsolver = spring_oscillators\nstiffness = -0.01\nparticles = 0\n"
+        "[solid]\nsolver = spring_oscillators\nstiffness = -0.01\nparticles = 0\nmode = A\n"
         "[fluid]\nsolver = linear_dashpot\ndamping = 1,5\n";
     path = write_case("bad2.ini", text2);
     c = load(path, &msgs, &n);
-    CHECK(n == 5, "bad2: %d errors (want 5):\n%s", n, msgs);
+    CHECK(n == 6, "bad2: %d errors (want 6):\n%s", n, msgs);
+    EXPECT_AT(msgs, path, text2, "mode",
+              "[solid] mode: 'A' is not one of: a, b (did you mean 'a'?)\n");
     EXPECT_AT(msgs, path, text2, "end_time", "[run] end_time: 'inf' is not a finite number");
     EXPECT_AT(msgs, path, text2, "output_interval",
               "[run] output_interval: 'nan' is not a finite number");
@@ -521,7 +523,7 @@ static void test_syntax(void)
     free(tail);
     tail = format("section [run] given twice (first at %s/dupsec.ini:1)", tmp_dir);
     EXPECT_READ_ERROR("dupsec.ini", "[run]\nend_time = 1\n[run]\nend_time = 2\n",
-                      "end_time = 1\n[run]", tail, 1);
+                      "[run]\nend_time = 2", tail, 1);
     free(tail);
     EXPECT_READ_ERROR("bracket.ini", "[run\nend_time = 1\n", "[run",
                       "syntax error: '[' without a closing ']'", 1);
@@ -538,7 +540,7 @@ static void test_syntax(void)
     memcpy(longline, "[solid]\nlong = ", 15);
     strcpy(longline + 15 + 250, "\nafter = 1\n");
     EXPECT_READ_ERROR("long.ini", longline, "long =",
-                      "line too long: 256 characters, at most 199 are allowed", 1);
+                      "line too long: 257 characters, at most 199 are allowed", 1);
 
     /* ... but a long line that fits is read whole. */
     char fits[300];
@@ -591,6 +593,7 @@ static void test_override(void)
         return;
     }
     CHECK(fsi_case_override(c, "solid.stiffness=5", err) == 0, "good --set");
+    CHECK(fsi_case_override(c, "solid.mode=c", err) == 0, "bad choice is for validate");
     CHECK(fsi_case_override(c, "fluid.damping = 0.25", err) == 0, "--set with blanks");
     CHECK(fsi_case_override(c, "run.output_interval=-1", err) == 0, "bad value is for validate");
     CHECK(fsi_case_override(c, "output.format=csv", err) == 0, "--set into an absent section");
@@ -601,7 +604,11 @@ static void test_override(void)
     CHECK(fsi_case_override(c, "run.x=1 ; 2", err) == -1, "--set value with a comment");
     int n = fsi_case_validate(c, &schema, err);
     char *msgs = read_all(err);
-    CHECK(n == 1, "override: %d errors:\n%s", n, msgs);
+    CHECK(n == 2, "override: %d errors:\n%s", n, msgs);
+    const char *mode_msg = strstr(msgs, "--set solid.mode=c: [solid] mode: 'c' is not one of");
+    const char *interval_msg = strstr(msgs, "--set run.output_interval=-1:");
+    CHECK(mode_msg && interval_msg && mode_msg < interval_msg,
+          "--set messages in command-line order:\n%s", msgs);
     CHECK(strstr(msgs, "--set nonsense: expected section.key=value\n") != NULL, "form: %s", msgs);
     CHECK(strstr(msgs, "--set novalue=3: expected section.key=value\n") != NULL, "dot: %s", msgs);
     CHECK(strstr(msgs, "--set run.a b=3: key 'a b' may not contain") != NULL, "key: %s", msgs);
@@ -718,8 +725,12 @@ static void test_markdown(void)
 
 int main(void)
 {
+    /* $FSI_TEST_TMP is shared by all unit tests: use a folder of our own in it. */
     const char *base = getenv("FSI_TEST_TMP");
-    snprintf(tmp_dir, sizeof tmp_dir, "%s/case_file", base && *base ? base : "/tmp/fsi_test_case");
+    if (base && *base)
+        snprintf(tmp_dir, sizeof tmp_dir, "%s/case_file", base);
+    else
+        snprintf(tmp_dir, sizeof tmp_dir, "/tmp/fsi_test_case");
     make_dirs(tmp_dir);
 
     test_valid();
