@@ -74,7 +74,7 @@ static const msg_codec codecs[FSI_MSG_COUNT] = {
 #define KEPT_MAX 16
 /* A copy is published again at most this often: requests that queued up while this
  * process was computing must not each send a large message. */
-#define RESEND_MIN_GAP_S 0.005
+#define RESEND_MIN_GAP_S 0.001
 
 typedef struct {
     int used;

@@ -1,0 +1,65 @@
+#!/usr/bin/env bash
+# Bad input: every kind of case error exits with status 2, names file, line, section
+# and key, and leaves no output folder behind.
+source "$(dirname "$0")/lib.sh"
+small_case good.ini
+
+# expect_bad NAME PATTERN [fsi run options...]: runs bad.ini, checks exit 2, message, no output.
+expect_bad() {
+  local name="$1" pattern="$2"
+  shift 2
+  set +e
+  "$FSI_RUN" bad.ini --out "out_$name" "$@" >"$name.txt" 2>&1
+  local status=$?
+  set -e
+  [ "$status" -eq 2 ] || { cat "$name.txt"; fail "$name: exit status $status, expected 2"; }
+  grep -qE -- "$pattern" "$name.txt" || { cat "$name.txt"; fail "$name: message does not match '$pattern'"; }
+  [ ! -e "out_$name" ] || fail "$name: output folder was created"
+  pass "$name: $(head -n 1 "$name.txt")"
+}
+
+# Line numbers below refer to small_case's layout: [run] at 1, end_time 3, [solid] 8,
+# solver 9, particles 10, time_step 11, [fluid] 13, solver 14, damping 15.
+sed 's/^particles = 50/particls = 50/' good.ini >bad.ini
+expect_bad typo "^bad.ini:10: \[solid\] particls: unknown key 'particls' \(did you mean 'particles'\?\)"
+
+sed '/^end_time/d' good.ini >bad.ini
+expect_bad missing_key "^bad.ini:1: \[run\] end_time: required key missing"
+
+sed 's/^damping = 2.0/damping = lots/' good.ini >bad.ini
+expect_bad bad_value "^bad.ini:15: \[fluid\] damping: 'lots' is not a number"
+
+sed 's/^time_step = 1e-4/time_step = -1e-4/' good.ini >bad.ini
+expect_bad negative "^bad.ini:11: \[solid\] time_step: -1e-4 must be > 0"
+
+sed 's/^solver = linear_dashpot/solver = ulhp/' good.ini >bad.ini
+expect_bad unknown_solver "^bad.ini:14: \[fluid\] solver: unknown solver 'ulhp'"
+
+sed 's/^solver = linear_dashpot/solver = spring_oscillators/' good.ini >bad.ini
+expect_bad wrong_role "^bad.ini:14: \[fluid\] solver: .*solid"
+
+sed 's/^\[fluid\]/[fluidd]/' good.ini >bad.ini
+expect_bad unknown_section "^bad.ini:13: .*\[fluidd\]"
+
+sed 's/^damping = 2.0/damping 2.0/' good.ini >bad.ini
+expect_bad syntax "^bad.ini:15: syntax error"
+
+sed 's/^damping = 2.0/damping = 2.0\ndamping = 3.0/' good.ini >bad.ini
+expect_bad duplicate "^bad.ini:16: \[fluid\] damping: .*15"
+
+cp good.ini bad.ini
+expect_bad bad_set "^--set solid.particles=0: \[solid\] particles: 0 must be >= 1" --set solid.particles=0
+expect_bad bad_set_form "^--set nodot" --set nodot
+expect_bad unknown_option "unknown or incomplete option '--frobnicate'" --frobnicate
+
+set +e
+"$FSI_RUN" does_not_exist.ini --out out_missing >missing.txt 2>&1
+status=$?
+set -e
+[ "$status" -eq 2 ] && grep -q "does_not_exist.ini" missing.txt && [ ! -e out_missing ] \
+  || { cat missing.txt; fail "missing case file: status $status"; }
+pass "missing case file: $(head -n 1 missing.txt)"
+
+# Several errors are all reported at once.
+sed 's/^particles = 50/particls = 50/; s/^damping = 2.0/damping = -1/' good.ini >bad.ini
+expect_bad two_errors "has 2 errors"
