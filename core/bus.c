@@ -8,66 +8,9 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "fsi_abort_t.h"
-#include "fsi_done_t.h"
-#include "fsi_fluid_load_t.h"
-#include "fsi_heartbeat_t.h"
-#include "fsi_register_t.h"
-#include "fsi_resend_t.h"
-#include "fsi_solid_state_t.h"
-#include "fsi_step_t.h"
-#include "fsi_welcome_t.h"
+#include "messages.h"
 #include "log.h"
 #include "timers.h"
-
-/* Uniform access to the lcm-gen functions of each type. Every message struct starts
- * with its fsi_header_t, so a message pointer is also a header pointer. */
-typedef struct {
-    size_t size;
-    int (*encoded_size)(const void *msg);
-    int (*encode)(void *buf, int maxlen, const void *msg);
-    int (*decode)(const void *buf, int len, void *msg);
-    void (*cleanup)(void *msg);
-} msg_codec;
-
-#define FSI_CODEC(T)                                                                  \
-    static int T##_size_any(const void *m) { return fsi_##T##_encoded_size(m); }     \
-    static int T##_encode_any(void *b, int n, const void *m)                          \
-    {                                                                                 \
-        return fsi_##T##_encode(b, 0, n, m);                                          \
-    }                                                                                 \
-    static int T##_decode_any(const void *b, int n, void *m)                          \
-    {                                                                                 \
-        return fsi_##T##_decode(b, 0, n, m);                                          \
-    }                                                                                 \
-    static void T##_cleanup_any(void *m) { fsi_##T##_decode_cleanup(m); }
-
-FSI_CODEC(register_t)
-FSI_CODEC(welcome_t)
-FSI_CODEC(step_t)
-FSI_CODEC(solid_state_t)
-FSI_CODEC(fluid_load_t)
-FSI_CODEC(done_t)
-FSI_CODEC(resend_t)
-FSI_CODEC(heartbeat_t)
-FSI_CODEC(abort_t)
-
-#define CODEC_ENTRY(T)                                                                \
-    {                                                                                 \
-        sizeof(fsi_##T), T##_size_any, T##_encode_any, T##_decode_any, T##_cleanup_any \
-    }
-
-static const msg_codec codecs[FSI_MSG_COUNT] = {
-    [FSI_MSG_REGISTER] = CODEC_ENTRY(register_t),
-    [FSI_MSG_WELCOME] = CODEC_ENTRY(welcome_t),
-    [FSI_MSG_STEP] = CODEC_ENTRY(step_t),
-    [FSI_MSG_SOLID_STATE] = CODEC_ENTRY(solid_state_t),
-    [FSI_MSG_FLUID_LOAD] = CODEC_ENTRY(fluid_load_t),
-    [FSI_MSG_DONE] = CODEC_ENTRY(done_t),
-    [FSI_MSG_RESEND] = CODEC_ENTRY(resend_t),
-    [FSI_MSG_HEARTBEAT] = CODEC_ENTRY(heartbeat_t),
-    [FSI_MSG_ABORT] = CODEC_ENTRY(abort_t),
-};
 
 /* Kept copies of recent data messages, answered on resend_t. A handful covers the
  * lockstep protocol, where only the current window's messages are ever asked for. */
@@ -194,7 +137,6 @@ static void keep_copy_locked(fsi_bus *b, fsi_msg_type type, int window, int iter
 
 int fsi_bus_publish(fsi_bus *b, fsi_msg_type type, void *msg)
 {
-    const msg_codec *c = &codecs[type];
     fsi_header_t *h = msg;
 
     pthread_mutex_lock(&b->lock);
@@ -202,10 +144,10 @@ int fsi_bus_publish(fsi_bus *b, fsi_msg_type type, void *msg)
     h->run_id = b->run_id;
     h->seq = ++b->seq;
     h->sender = b->self;
-    int len = c->encoded_size(msg);
-    void *bytes = malloc((size_t)len);
+    int len = fsi_message_encoded_size(type, msg);
+    void *bytes = len > 0 ? malloc((size_t)len) : NULL;
     int rc = -1;
-    if (bytes && c->encode(bytes, len, msg) == len) {
+    if (bytes && fsi_message_encode(type, msg, bytes, len) == len) {
         rc = send_locked(b, type, bytes, len);
         if (keeps_copy(type)) {
             keep_copy_locked(b, type, h->window, h->iteration, bytes, len);
@@ -268,25 +210,9 @@ static void on_lcm_message(const lcm_recv_buf_t *rbuf, const char *channel, void
         count(b, &b->counters.ignored_unknown_channel);
         return;
     }
-    const msg_codec *c = &codecs[type];
-    union {
-        fsi_header_t header;
-        fsi_register_t reg;
-        fsi_welcome_t welcome;
-        fsi_step_t step;
-        fsi_solid_state_t solid;
-        fsi_fluid_load_t fluid;
-        fsi_done_t done;
-        fsi_resend_t resend;
-        fsi_heartbeat_t heartbeat;
-        fsi_abort_t abort_msg;
-    } msg;
-    memset(&msg, 0, sizeof msg);
+    fsi_message msg;
     /* lcm-gen's decode checks the type fingerprint and every length against the buffer. */
-    int used = c->decode(rbuf->data, (int)rbuf->data_size, &msg);
-    if (used != (int)rbuf->data_size) {
-        if (used >= 0)
-            c->cleanup(&msg);
+    if (fsi_message_decode((fsi_msg_type)type, rbuf->data, (int)rbuf->data_size, &msg) != 0) {
         count(b, &b->counters.ignored_undecodable);
         return;
     }
@@ -302,7 +228,7 @@ static void on_lcm_message(const lcm_recv_buf_t *rbuf, const char *channel, void
         else if (b->handler)
             b->handler((fsi_msg_type)type, &msg, b->user);
     }
-    c->cleanup(&msg);
+    fsi_message_cleanup((fsi_msg_type)type, &msg);
 }
 
 fsi_bus *fsi_bus_open(const char *url, const char *self, int64_t run_id,
