@@ -35,21 +35,27 @@ fsi_window_plan fsi_window_schedule_next(fsi_window_schedule *s, double t, doubl
     if (t + dt < t_event - EVENT_TOLERANCE * dt)
         return plan;
 
-    plan.t_next = t_event;
-    plan.dt = t_event - t;
-    /* Several events can fall on one time (a frame that is also a probe time). */
+    /* Several events can fall on one time (a frame that is also a probe time); the
+     * window then ends on the frame's own exact multiple, which outputs line up on. */
     double tol = EVENT_TOLERANCE * fmax(dt, 1e-300);
     if (fabs(frame_time(s) - t_event) <= tol) {
+        t_event = frame_time(s);
         plan.frame = (int)s->next_frame++;
-        plan.probe = 1;   /* probe rows line up with every frame */
+        plan.probe = 1;
     }
     while (probe_time(s) <= t_event + tol) {
         s->next_probe++;
         plan.probe = 1;
     }
     if (t_event >= s->t_end - tol) {
+        /* The final state is always written and probed, whatever the intervals. */
+        t_event = s->t_end;
         plan.last = 1;
-        plan.t_next = s->t_end;
+        plan.probe = 1;
+        if (plan.frame < 0)
+            plan.frame = (int)s->next_frame++;
     }
+    plan.t_next = t_event;
+    plan.dt = t_event - t;
     return plan;
 }

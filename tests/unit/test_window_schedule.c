@@ -1,0 +1,92 @@
+/* The coupler's window schedule: windows never exceed the proposals or max_window,
+ * end exactly on every output, probe and end time, and number frames 1, 2, ... */
+#include <math.h>
+#include <stdio.h>
+
+#include "window_schedule.h"
+
+static int failures;
+
+#define CHECK(cond, ...)                                                              \
+    do {                                                                              \
+        if (!(cond)) {                                                                \
+            failures++;                                                               \
+            printf("FAIL %s:%d: ", __FILE__, __LINE__);                               \
+            printf(__VA_ARGS__);                                                      \
+            printf("\n");                                                             \
+        }                                                                             \
+    } while (0)
+
+/* Runs a whole schedule and checks its invariants; returns the window count. */
+static long run_schedule(double t_end, double out, double probe, double max_window,
+                         double proposal, int *frames, long *probes)
+{
+    fsi_window_schedule s;
+    fsi_window_schedule_init(&s, t_end, out, probe, max_window);
+    double t = 0.0;
+    long windows = 0;
+    *frames = 0;
+    *probes = 0;
+    for (;;) {
+        fsi_window_plan p = fsi_window_schedule_next(&s, t, proposal);
+        windows++;
+        CHECK(p.dt > 0, "window %ld has dt %g", windows, p.dt);
+        CHECK(p.dt <= fmin(proposal, max_window) * (1 + 1e-12), "dt %.17g exceeds %.17g",
+              p.dt, fmin(proposal, max_window));
+        if (p.frame >= 0) {
+            (*frames)++;
+            CHECK(p.frame == *frames, "frame %d where %d expected", p.frame, *frames);
+            /* Frame times are exact multiples, not sums of windows. */
+            CHECK(p.t_next == p.frame * out || p.last, "frame %d at %.17g, not %.17g", p.frame,
+                  p.t_next, p.frame * out);
+        }
+        if (p.probe)
+            (*probes)++;
+        t = p.t_next;
+        if (p.last)
+            break;
+        CHECK(windows < 10000000, "schedule does not end");
+        if (windows >= 10000000)
+            break;
+    }
+    CHECK(t == t_end, "ends at %.17g instead of %.17g", t, t_end);
+    return windows;
+}
+
+int main(void)
+{
+    int frames;
+    long probes;
+
+    /* Proposal below max_window: 0.004 s windows, frames every 0.1 s, probes every 0.03 s. */
+    long w = run_schedule(1.0, 0.1, 0.03, 0.007, 0.004, &frames, &probes);
+    CHECK(frames == 10, "%d frames, expected 10", frames);
+    /* Probe rows: 33 multiples of 0.03 up to 0.99, plus frames not on them, plus the end.
+     * Multiples of 0.03 that are also frame times (0.3, 0.6, 0.9) count once. */
+    CHECK(probes == 33 + 10 - 3, "%ld probe rows, expected 40", probes);
+    /* 250 windows of 0.004 s, plus the extra cuts at probe times not on the 0.004 grid. */
+    CHECK(w >= 250 && w <= 250 + 40, "%ld windows", w);
+
+    /* max_window below the proposal. */
+    w = run_schedule(0.5, 0.25, 0.0, 0.01, 1.0, &frames, &probes);
+    CHECK(w == 50, "%ld windows, expected 50", w);
+    CHECK(frames == 2, "%d frames, expected 2", frames);
+    CHECK(probes == 50, "probe_interval 0 gives %ld probe rows, expected one per window", probes);
+
+    /* An end time that is not a multiple of the output interval. */
+    w = run_schedule(0.33, 0.1, 0.1, 0.05, 0.05, &frames, &probes);
+    CHECK(frames == 4, "%d frames, expected 0.1, 0.2, 0.3 and the final state", frames);
+    CHECK(probes == 4, "%ld probe rows, expected 0.1, 0.2, 0.3 and the end", probes);
+
+    /* Windows of 0.1 s summed in floating point would miss 0.3 exactly; the schedule must
+     * still land on it rather than leave a 1e-17 s sliver. */
+    w = run_schedule(1.0, 0.1, 0.1, 0.1, 0.1, &frames, &probes);
+    CHECK(w == 10, "%ld windows of 0.1 s, expected 10 (a sliver window appeared)", w);
+
+    if (failures) {
+        printf("%d check(s) failed\n", failures);
+        return 1;
+    }
+    printf("window schedule: all checks passed\n");
+    return 0;
+}
