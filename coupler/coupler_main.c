@@ -67,6 +67,9 @@ typedef struct {
     fsi_progress progress;
     fsi_probes_csv probes;
     double wall_start;
+    /* Wall time from each grant to the last done_t: the cost of one coupling window. */
+    double *window_wall;
+    long n_window_wall, window_wall_capacity;
 } coupler;
 
 static participant_info *find(coupler *c, const char *name)
@@ -308,6 +311,24 @@ static void write_probe_row(coupler *c, double t)
     fsi_probes_csv_row(&c->probes, t, values);
 }
 
+/* Keeps at most this many window timings (8 MB); later windows are not sampled. */
+#define MAX_WINDOW_SAMPLES 1000000
+
+static void record_window_wall(coupler *c, double seconds)
+{
+    if (c->n_window_wall == c->window_wall_capacity) {
+        if (c->window_wall_capacity >= MAX_WINDOW_SAMPLES)
+            return;
+        long cap = c->window_wall_capacity ? 2 * c->window_wall_capacity : 4096;
+        double *grown = realloc(c->window_wall, (size_t)cap * sizeof(double));
+        if (!grown)
+            return;
+        c->window_wall = grown;
+        c->window_wall_capacity = cap;
+    }
+    c->window_wall[c->n_window_wall++] = seconds;
+}
+
 static int run_windows(coupler *c)
 {
     double t_end = fsi_case_get_real(c->case_file, "run", "end_time", 0.0);
@@ -325,9 +346,12 @@ static int run_windows(coupler *c)
     c->t = 0.0;
     fsi_window_plan plan = {0.0, 0.0, 0, 1, 0};
     for (;;) {
+        double granted = fsi_wall_seconds();
         publish_step(c, plan.dt, plan.probe ? FSI_STEP_PROBE : 0, plan.frame);
         if (wait_for_done(c) != 0)
             return -1;
+        if (c->window > 0)
+            record_window_wall(c, fsi_wall_seconds() - granted);
         c->t = plan.t_next;
         if (plan.probe)
             write_probe_row(c, c->t);
@@ -366,6 +390,24 @@ static void announce_abort(coupler *c)
         fsi_bus_publish(c->bus, FSI_MSG_ABORT, &a);
 }
 
+static int by_value(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+static void write_window_timing(FILE *log, coupler *c)
+{
+    if (c->n_window_wall == 0)
+        return;
+    qsort(c->window_wall, (size_t)c->n_window_wall, sizeof(double), by_value);
+    double *w = c->window_wall;
+    long n = c->n_window_wall;
+    fprintf(log, "window_round_trip_median = %.1f us\nwindow_round_trip_p90 = %.1f us\n"
+                 "window_round_trip_max = %.1f us\n",
+            1e6 * w[n / 2], 1e6 * w[(long)(0.9 * (double)(n - 1))], 1e6 * w[n - 1]);
+}
+
 static void write_bus_counters(FILE *log, const char *who, fsi_bus_counters b)
 {
     fprintf(log,
@@ -392,6 +434,7 @@ static void write_summary(coupler *c)
     fprintf(log, "\n[coupler]\nwindows = %d\nsimulated_time = %.9g s\nwall_time = %.3f s\n"
                  "windows_per_second = %.1f\n",
             c->window, c->t, wall, wall > 0 ? c->window / wall : 0.0);
+    write_window_timing(log, c);
     write_bus_counters(log, "coupler", fsi_bus_get_counters(c->bus));
     for (int i = 0; i < c->n_part; i++) {
         participant_info *p = &c->part[i];
@@ -441,6 +484,7 @@ static void teardown(coupler *c)
 {
     fsi_probes_csv_close(&c->probes);
     fsi_bus_close(c->bus);
+    free(c->window_wall);
     for (int i = 0; i < c->n_part; i++) {
         participant_info *p = &c->part[i];
         free_strings(p->probe_names, p->n_probes);
