@@ -1,0 +1,54 @@
+/* The interface every solid model folder implements (nosbpd/, later tlsph/,
+ * pseudo_spring/), in the spirit of SWIFT's hydro schemes: the same small set of
+ * functions, one model linked per executable (fsi-solid-<model>), chosen by the
+ * case's `solver = <model>`. The main loop (solid_main.c) owns the particles, time
+ * integration (velocity Verlet, 000 Eq. 55), external and interface loads, damping,
+ * output and the coupling; the model owns everything between positions and internal
+ * forces: bonds, kinematics, constitutive state, failure.
+ *
+ * Error convention: functions returning int give 0 on success and -1 after writing
+ * one line "what, where (particle id and position), when (time)" to msg[msg_size]. */
+#ifndef FSI_SOLID_MODEL_H
+#define FSI_SOLID_MODEL_H
+
+#include <stddef.h>
+
+#include "case_file.h"
+#include "h5_output.h"
+#include "solid_particles.h"
+
+typedef struct solid_model solid_model;
+
+/* Case keys: each model folder also defines `const fsi_key_table fsi_<model>_keys`
+ * in its own <model>_keys.c (distinct names, because the launcher's registry links
+ * every model's keys at once while an executable links one model). */
+
+/* Builds bonds and constitutive state for the particles in their reference
+ * configuration x0. Warns on stderr about points whose horizon is too poor. */
+solid_model *solid_model_create(const fsi_case *c, const solid_particles *p, char *msg,
+                                size_t msg_size);
+
+/* Largest stable explicit step for the current state [s], before the main loop's
+ * safety factor. */
+double solid_model_stable_dt(const solid_model *m, const solid_particles *p);
+
+/* Internal force on every particle [N, per unit thickness in 2D] for the positions
+ * p->x reached from x_prev over dt (the incremental, objective stress update needs
+ * both), at time t (for messages). Updates stress, plastic state and bonds
+ * (breaking is permanent). force has p->n * FSI_DIM entries, overwritten. */
+int solid_model_internal_force(solid_model *m, const solid_particles *p, const double *x_prev,
+                               double dt, double t, double *force, char *msg, size_t msg_size);
+
+/* Marks (1) the particles whose horizon is cut by a free surface or a crack: the
+ * points the fluid can reach. Returns how many. */
+int solid_model_surface(const solid_model *m, const solid_particles *p, uint8_t *surface);
+
+/* Writes the model's fields (stress, damage, plastic strain, ...) into the open frame. */
+int solid_model_write_fields(const solid_model *m, fsi_h5_writer *out);
+
+/* Named scalar figures for the run log and for stability checks, e.g. broken bonds. */
+double solid_model_strain_energy(const solid_model *m, const solid_particles *p);
+
+void solid_model_free(solid_model *m);
+
+#endif
