@@ -86,8 +86,16 @@ static void read_test_drop_switch(fsi_bus *b)
         return;
     }
     const char *seed = getenv("FSI_TEST_DROP_SEED");
+    unsigned long long seed_value = 1u;
+    if (seed && *seed) {
+        seed_value = strtoull(seed, &end, 10);
+        if (*end || seed[0] == '-') {
+            fsi_warn("FSI_TEST_DROP_SEED='%s' is not a non-negative integer; using 1", seed);
+            seed_value = 1u;
+        }
+    }
     b->drop_fraction = fraction;
-    b->drop_state = (seed ? strtoull(seed, NULL, 10) : 1u) ^ name_hash(b->self);
+    b->drop_state = seed_value ^ name_hash(b->self);
 }
 
 static int test_drops_this_one(fsi_bus *b)
@@ -246,10 +254,12 @@ fsi_bus *fsi_bus_open(const char *url, const char *self, int64_t run_id,
     atomic_init(&b->heartbeat_window, -1);
     atomic_init(&b->heartbeat_state, 0);
     read_test_drop_switch(b);
-    b->lcm = lcm_create(url && *url ? url : FSI_DEFAULT_LCM_URL);
+    if (!url || !*url)
+        url = FSI_DEFAULT_LCM_URL;
+    b->lcm = lcm_create(url);
     if (!b->lcm) {
         fsi_error("bus: cannot open LCM URL '%s' (no multicast route? see docs/protocol.md)",
-                  url && *url ? url : FSI_DEFAULT_LCM_URL);
+                  url);
         pthread_mutex_destroy(&b->lock);
         free(b);
         return NULL;

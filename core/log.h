@@ -17,7 +17,10 @@ void fsi_error(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
 enum {
     FSI_EXIT_OK = 0,
     FSI_EXIT_RUN_FAILURE = 1,
-    FSI_EXIT_BAD_INPUT = 2
+    FSI_EXIT_BAD_INPUT = 2,
+    /* A process that stops because another one aborted the run: never the culprit,
+     * so the launcher can name the process that really failed. */
+    FSI_EXIT_STOPPED_BY_PEER = 3
 };
 
 #endif

@@ -226,10 +226,10 @@ static void on_message(fsi_msg_type type, const void *msg, void *user)
 }
 
 /* The run cannot go on for this process: say why and leave (output is between frames). */
-static void die_with_run(const char *why)
+static void die_with_run(const char *why, int status)
 {
     fsi_error("%s", why);
-    exit(FSI_EXIT_RUN_FAILURE);
+    exit(status);
 }
 
 static void check_run_alive(fsi_participant *p)
@@ -237,14 +237,14 @@ static void check_run_alive(fsi_participant *p)
     char why[1024];
     if (p->aborted) {
         snprintf(why, sizeof why, "run aborted by %s: %s", p->abort_culprit, p->abort_reason);
-        die_with_run(why);
+        die_with_run(why, FSI_EXIT_STOPPED_BY_PEER);
     }
     double silent = fsi_wall_seconds() - p->coupler_last_heard;
     if (silent > p->env.watchdog_timeout) {
         snprintf(why, sizeof why,
                  "coupler not heard for %.1f s (window %d, t = %.6g s): stopping", silent,
                  p->window, p->t);
-        die_with_run(why);
+        die_with_run(why, FSI_EXIT_RUN_FAILURE);
     }
 }
 
@@ -267,7 +267,7 @@ static void wait_for(fsi_participant *p, ready_fn ready, request_fn request)
             next_request = now + interval;
         }
         if (fsi_bus_poll(p->bus, next_request - now) < 0)
-            die_with_run("LCM transport failed while waiting");
+            die_with_run("LCM transport failed while waiting", FSI_EXIT_RUN_FAILURE);
     }
     fsi_timer_stop(&p->lib_timers, p->t_wait);
 }
@@ -392,6 +392,11 @@ int fsi_window_index(const fsi_participant *p)
     return p->window;
 }
 
+int fsi_probe_window(const fsi_participant *p)
+{
+    return (p->flags & FSI_STEP_PROBE) != 0;
+}
+
 int fsi_output_frame(const fsi_participant *p)
 {
     return p->frame;
@@ -482,8 +487,24 @@ static int send_done(fsi_participant *p, int status, double dt_next_max, int n_s
     return fsi_bus_publish(p->bus, FSI_MSG_DONE, &d);
 }
 
+/* Test switch FSI_TEST_STALL="NAME:K": participant NAME never reports window K,
+ * while its heartbeat thread keeps it looking alive — how the tests reproduce a
+ * deadlock for [run] window_timeout. */
+static void test_stall_switch(const fsi_participant *p)
+{
+    const char *spec = getenv("FSI_TEST_STALL");
+    const char *colon = spec ? strrchr(spec, ':') : NULL;
+    if (!colon || (size_t)(colon - spec) != strlen(p->name) ||
+        strncmp(spec, p->name, strlen(p->name)) != 0 || atoi(colon + 1) != p->window)
+        return;
+    fsi_warn("test switch FSI_TEST_STALL: stalling in window %d", p->window);
+    for (;;)
+        pause();
+}
+
 int fsi_advance(fsi_participant *p, double dt_next_max)
 {
+    test_stall_switch(p);
     return send_done(p, FSI_STATUS_OK, dt_next_max, 0, NULL, NULL);
 }
 

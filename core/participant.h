@@ -50,7 +50,8 @@ typedef struct {
 
 /* Joins the run. NULL name/case_path are taken from FSI_PARTICIPANT/FSI_CASE.
  * role is "fluid" or "solid"; dt_first is the largest first window this solver can
- * take [s]. Returns NULL with a message when the environment or case is unusable.
+ * take [s]; it stands as this participant's proposal until its first fsi_advance()
+ * (window 0 has zero length, so the proposal made there sizes window 1). Returns NULL with a message when the environment or case is unusable.
  * Registration with the coupler happens in the first fsi_ongoing() call. */
 fsi_participant *fsi_open(const char *name, const char *role, const char *case_path,
                           double dt_first);
@@ -66,6 +67,9 @@ int fsi_ongoing(fsi_participant *p);
 double fsi_window(const fsi_participant *p);      /* dt of the current window [s] */
 double fsi_time(const fsi_participant *p);        /* t_k, its start [s] */
 int fsi_window_index(const fsi_participant *p);   /* k */
+/* True when the coupler records probes at the end of this window: a solver whose
+ * probes are costly may compute them only then (fsi_set_probe is always allowed). */
+int fsi_probe_window(const fsi_participant *p);
 /* Frame index to write at the end of this window (at t_k + dt), or -1. */
 int fsi_output_frame(const fsi_participant *p);
 /* True when the other side of the interface takes part in this run. */

@@ -62,6 +62,7 @@ typedef struct {
     int window;
     double t;
     int failed;
+    int failure_relayed;    /* the failure was a participant's own abort, not ours to detect */
     char culprit[64];
     char reason[1024];
     fsi_progress progress;
@@ -139,6 +140,11 @@ static void take_register(coupler *c, participant_info *p, const fsi_register_t 
         p->registered = 1;
         p->pid = r->pid;
         snprintf(p->host, sizeof p->host, "%s", r->host);
+        if (!(r->dt_proposed > 0.0)) {
+            fail(c, p->name, "participant '%s' registered with a first window of %g s "
+                 "(must be > 0)", p->name, r->dt_proposed);
+            return;
+        }
         p->dt_proposed = r->dt_proposed;
         p->n_probes = r->n_probes;
         p->probe_names = copy_strings(r->probe_names, r->n_probes);
@@ -157,6 +163,11 @@ static void take_done(coupler *c, participant_info *p, const fsi_done_t *d)
     if (d->n_probes != p->n_probes) {
         fail(c, p->name, "participant '%s' sent %d probe values, registered %d", p->name,
              d->n_probes, p->n_probes);
+        return;
+    }
+    if (d->status != FSI_STATUS_FINISHED && !(d->dt_next_max > 0.0)) {
+        fail(c, p->name, "participant '%s' proposed a next window of %g s in window %d "
+             "(must be > 0): its stable step collapsed", p->name, d->dt_next_max, c->window);
         return;
     }
     p->done_window = d->header.window;
@@ -185,6 +196,8 @@ static void on_message(fsi_msg_type type, const void *msg, void *user)
         take_done(c, p, msg);
     else if (type == FSI_MSG_ABORT) {
         const fsi_abort_t *a = msg;
+        if (!c->failed)
+            c->failure_relayed = 1;
         fail(c, a->culprit, "participant '%s' failed: %s", a->culprit, a->reason);
     }
 }
@@ -240,10 +253,23 @@ static int wait_for_done(coupler *c)
         c->part[i].request_interval = REQUEST_FIRST_S;
         c->part[i].next_request = now + REQUEST_FIRST_S;
     }
+    double window_timeout = fsi_case_get_real(c->case_file, "run", "window_timeout", 600.0);
+    double started = now;
     for (;;) {
         int missing = 0;
         double next_event = fsi_wall_seconds() + POLL_SLICE_S;
         now = fsi_wall_seconds();
+        if (window_timeout > 0 && now - started > window_timeout) {
+            for (int i = 0; i < c->n_part; i++)
+                if (c->part[i].done_window < c->window) {
+                    fail(c, c->part[i].name,
+                         "participant '%s' alive but window %d (t = %.9g s) not done after "
+                         "%.0f s ([run] window_timeout): stuck or deadlocked",
+                         c->part[i].name, c->window, c->t, window_timeout);
+                    break;
+                }
+            return -1;
+        }
         for (int i = 0; i < c->n_part; i++) {
             participant_info *p = &c->part[i];
             if (p->done_window >= c->window)
@@ -527,7 +553,8 @@ int main(void)
         fsi_error("run stopped: %s", c.reason);
     }
     write_summary(&c);
-    int status = c.failed ? FSI_EXIT_RUN_FAILURE : FSI_EXIT_OK;
+    int status = !c.failed ? FSI_EXIT_OK
+                 : c.failure_relayed ? FSI_EXIT_STOPPED_BY_PEER : FSI_EXIT_RUN_FAILURE;
     teardown(&c);
     return status;
 }

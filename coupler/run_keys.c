@@ -23,6 +23,10 @@ static const fsi_key_spec run_keys[] = {
      NULL,
      "A process not heard from for this long (wall time) is taken as dead or hung and the "
      "run stops, naming it."},
+    {"window_timeout", FSI_KEY_REAL, "s", "600", FSI_BOUND_MIN, 0, 0, NULL,
+     "Longest wall time one coupling window may take while everyone is alive (a deadlock "
+     "between participants keeps their heartbeats going); the run stops naming who has not "
+     "reported. 0 switches the check off."},
     {"register_timeout", FSI_KEY_REAL, "s", "30", FSI_BOUND_MIN_OPEN, 0, 0, NULL,
      "Wall time the coupler waits for every participant to register."},
     {"progress_interval", FSI_KEY_REAL, "s", "2", FSI_BOUND_MIN_OPEN, 0, 0, NULL,

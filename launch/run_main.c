@@ -285,6 +285,28 @@ static void append_log(const char *path, const char *fmt, ...)
     fclose(log);
 }
 
+/* The coupler's own account of a failure, from its 'coupler_exit = failure: ...'
+ * line in run.log; empty when it has none. */
+static void coupler_verdict(const char *log_path, char *out, size_t size)
+{
+    static const char tag[] = "coupler_exit = failure: ";
+    char line[2048];
+    out[0] = '\0';
+    FILE *f = fopen(log_path, "r");
+    if (!f)
+        return;
+    while (fgets(line, sizeof line, f))
+        if (strncmp(line, tag, sizeof tag - 1) == 0) {
+            line[strcspn(line, "\n")] = '\0';
+            size_t len = strlen(line + sizeof tag - 1);
+            if (len >= size)
+                len = size - 1;
+            memcpy(out, line + sizeof tag - 1, len);
+            out[len] = '\0';
+        }
+    fclose(f);
+}
+
 static void print_log_tail(const char *path)
 {
     FILE *f = fopen(path, "r");
@@ -444,8 +466,14 @@ int main(int argc, char **argv)
 
     double wall = fsi_wall_seconds() - sup.started;
     if (failed) {
-        append_log(log_path, "\nexit = failure: %s\n", sup.failure);
+        /* The coupler knows who failed when a process hung rather than died. */
+        char verdict[1024] = "";
+        coupler_verdict(log_path, verdict, sizeof verdict);
+        append_log(log_path, "\nexit = failure: %s%s%s\n", sup.failure,
+                   verdict[0] ? "; coupler: " : "", verdict);
         fprintf(stderr, "fsi run: run failed: %s\n", sup.failure);
+        if (verdict[0])
+            fprintf(stderr, "fsi run: coupler: %s\n", verdict);
         for (int i = 0; i < n_plan; i++) {
             snprintf(path, sizeof path, "%s/%s.log", out_abs, plan[i].role);
             print_log_tail(path);

@@ -18,6 +18,9 @@
 #define PARTICIPANT_EXIT_GRACE_S 10.0
 /* Processes asked to stop get this long before SIGKILL. */
 #define STOP_GRACE_S 2.0
+/* After a process stopped because another aborted the run, the culprit gets this
+ * long to end on its own so that it, not the first to leave, is named. */
+#define CULPRIT_GRACE_S 2.0
 
 int fsi_supervisor_start(fsi_supervisor *s, const char *name, const char *program,
                          char *const argv[], char *const extra_env[], const char *log_path,
@@ -81,6 +84,25 @@ static int ended_well(const fsi_child *c)
     return WIFEXITED(c->status) && WEXITSTATUS(c->status) == 0;
 }
 
+static int stopped_by_peer(const fsi_child *c)
+{
+    return WIFEXITED(c->status) && WEXITSTATUS(c->status) == FSI_EXIT_STOPPED_BY_PEER;
+}
+
+static void describe_failure(fsi_supervisor *s, const fsi_child *c, double now)
+{
+    char how[256];
+    describe_end(c, how, sizeof how);
+    if (stopped_by_peer(c))
+        snprintf(how, sizeof how, "stopped because the run was aborted");
+    if (c->is_coupler)
+        snprintf(s->failure, sizeof s->failure, "the coupler (pid %d) %s after %.1f s",
+                 (int)c->pid, how, now - s->started);
+    else
+        snprintf(s->failure, sizeof s->failure, "participant '%s' (pid %d) %s after %.1f s",
+                 c->name, (int)c->pid, how, now - s->started);
+}
+
 static void signal_running(fsi_supervisor *s, int sig, int helpers)
 {
     for (int i = 0; i < s->n; i++)
@@ -137,27 +159,33 @@ static void stop_all(fsi_supervisor *s)
 int fsi_supervisor_wait(fsi_supervisor *s, volatile int *interrupted)
 {
     double coupler_ended = -1.0;
+    const fsi_child *first_stopped = NULL;    /* left because someone else aborted */
+    double first_stopped_at = 0.0;
     for (;;) {
         fsi_child *c;
         int running = reap(s, &c);
         double now = fsi_wall_seconds();
         if (c) {
-            char how[256];
-            describe_end(c, how, sizeof how);
+            if (stopped_by_peer(c)) {
+                if (!first_stopped) {
+                    first_stopped = c;
+                    first_stopped_at = now;
+                }
+                continue;
+            }
             if (!ended_well(c)) {
-                if (c->is_coupler)
-                    snprintf(s->failure, sizeof s->failure, "the coupler (pid %d) %s after %.1f s",
-                             (int)c->pid, how, now - s->started);
-                else
-                    snprintf(s->failure, sizeof s->failure,
-                             "participant '%s' (pid %d) %s after %.1f s", c->name, (int)c->pid,
-                             how, now - s->started);
+                describe_failure(s, c, now);
                 stop_all(s);
                 return 1;
             }
             if (c->is_coupler)
                 coupler_ended = now;
             continue;
+        }
+        if (first_stopped && (running == 0 || now - first_stopped_at > CULPRIT_GRACE_S)) {
+            describe_failure(s, first_stopped, first_stopped_at);
+            stop_all(s);
+            return 1;
         }
         if (running == 0)
             return 0;

@@ -1,0 +1,35 @@
+#!/usr/bin/env bash
+# Two failures that heartbeats alone do not reveal, each named correctly:
+#  (a) a participant alive but stuck (a deadlock) stops the run after
+#      [run] window_timeout, naming it;
+#  (b) a participant that goes numerically unstable aborts with where and when, and
+#      `fsi run` names it — not the processes that stopped because of its abort.
+source "$(dirname "$0")/lib.sh"
+small_case case.ini 0.3
+
+# (a) the solid never reports window 50; window_timeout 2 s.
+set +e
+start=$(date +%s.%N)
+FSI_TEST_STALL="solid:50" "$FSI_RUN" case.ini --out stuck --set run.window_timeout=2 >stuck.txt 2>&1
+status=$?
+set -e
+took=$(echo "$(date +%s.%N) - $start" | bc)
+[ "$status" -eq 1 ] || { cat stuck.txt; fail "stuck run: exit $status, expected 1"; }
+grep -q "participant 'solid' alive but window 50 .* not done after 2 s" stuck.txt ||
+  { cat stuck.txt; fail "stuck run: message does not name the stuck solid and its window"; }
+awk -v t="$took" 'BEGIN {exit !(t < 10)}' || fail "stuck run took $took s (window_timeout 2 s)"
+h5dump -H stuck/solid.h5 >/dev/null || fail "stuck run: solid.h5 unreadable"
+pass "stuck solid named after window_timeout, run stopped in $(printf %.1f "$took") s"
+
+# (b) omega = sqrt(k/m) = 1e5 rad/s with sub-steps of 1e-4 s: velocity Verlet is
+# unstable (omega h = 10 > 2) and overflows within a few hundred sub-steps.
+set +e
+"$FSI_RUN" case.ini --out unstable --set solid.stiffness=1e10 >unstable.txt 2>&1
+status=$?
+set -e
+[ "$status" -eq 1 ] || { cat unstable.txt; fail "unstable run: exit $status, expected 1"; }
+line=$(grep "run failed:" unstable.txt) || { cat unstable.txt; fail "no 'run failed' line"; }
+echo "$line" | grep -q "participant 'solid'" || fail "the failure names the wrong process: $line"
+grep -q "not finite at t = " unstable/solid.log || fail "solid.log does not say when it blew up"
+h5dump -H unstable/fluid.h5 >/dev/null || fail "unstable run: fluid.h5 unreadable"
+pass "unstable solid named: $line"
