@@ -12,6 +12,7 @@
  * Errors are collected, sorted by position and printed together, so that one
  * run of the program shows the user everything that is wrong with the file. */
 #include "case_file.h"
+#include "case_file_internal.h"
 #include "dim.h"
 
 #include <ini.h>
@@ -103,6 +104,25 @@ static char *trimmed_copy(const char *s, size_t n)
     return xstrndup(s, n);
 }
 
+/* A section name as the case stores it: trimmed, every run of blanks cut to one
+ * space, so that [solid.block  beam], --set "solid.block beam.x=1" and the name
+ * a solver gets from fsi_case_objects() are the same section. */
+static char *section_name_copy(const char *s, size_t n)
+{
+    char *name = trimmed_copy(s, n);
+    char *out = name;
+    for (const char *p = name; *p; p++) {
+        if (isspace((unsigned char)*p)) {
+            if (out[-1] != ' ')     /* never at the start: the name is trimmed */
+                *out++ = ' ';
+        } else {
+            *out++ = *p;
+        }
+    }
+    *out = '\0';
+    return name;
+}
+
 static int ascii_equal_nocase(const char *a, const char *b)
 {
     for (; *a && *b; a++, b++)
@@ -112,7 +132,7 @@ static int ascii_equal_nocase(const char *a, const char *b)
 }
 
 /* Shortest text that reads back as the same double, so bounds print as "0.1". */
-static void format_number(double x, char *buf, size_t size)
+void fsi_case_format_number(double x, char *buf, size_t size)
 {
     snprintf(buf, size, "%.15g", x);
     if (strtod(buf, NULL) != x)
@@ -234,11 +254,13 @@ typedef struct {
     char *key;
     char *value;
     origin from;
+    char *label;        /* 'from' as text, for fsi_case_origin() */
 } entry;
 
 typedef struct {
     char *name;
     origin from;        /* the header line, or the --set that created the section */
+    char *label;
     entry **entries;    /* pointers, so getters' strings survive later additions */
     int n_entries, cap_entries;
 } section;
@@ -257,6 +279,26 @@ static origin origin_copy(const origin *o)
     return c;
 }
 
+/* "FILE:LINE" or "--set ..." for 'o'; for a default, 'default_text'. */
+static char *origin_text(const fsi_case *c, const origin *o, const char *default_text)
+{
+    switch (o->kind) {
+    case FROM_FILE:
+        return xasprintf("%s:%d", c->path, o->line);
+    case FROM_SET:
+        return xasprintf("--set %s", o->set_text);
+    case FROM_DEFAULT:
+        break;
+    }
+    return xstrdup(default_text);
+}
+
+/* What fsi_case_origin() says about a value or section from 'o'. */
+static char *origin_label(const fsi_case *c, const origin *o)
+{
+    return origin_text(c, o, "default");
+}
+
 static section *find_section(const fsi_case *c, const char *name)
 {
     for (int i = 0; i < c->n_sections; i++)
@@ -270,6 +312,7 @@ static section *add_section(fsi_case *c, const char *name, const origin *from)
     section *s = xrealloc(NULL, sizeof *s);
     s->name = xstrdup(name);
     s->from = origin_copy(from);
+    s->label = origin_label(c, from);
     s->entries = NULL;
     s->n_entries = s->cap_entries = 0;
     c->sections = grow(c->sections, c->n_sections, &c->cap_sections, sizeof *c->sections);
@@ -285,12 +328,14 @@ static entry *find_entry(const section *s, const char *key)
     return NULL;
 }
 
-static entry *add_entry(section *s, const char *key, const char *value, const origin *from)
+static entry *add_entry(const fsi_case *c, section *s, const char *key, const char *value,
+                        const origin *from)
 {
     entry *e = xrealloc(NULL, sizeof *e);
     e->key = xstrdup(key);
     e->value = xstrdup(value);
     e->from = origin_copy(from);
+    e->label = origin_label(c, from);
     s->entries = grow(s->entries, s->n_entries, &s->cap_entries, sizeof *s->entries);
     s->entries[s->n_entries++] = e;
     return e;
@@ -306,11 +351,13 @@ void fsi_case_free(fsi_case *c)
             free(s->entries[j]->key);
             free(s->entries[j]->value);
             free(s->entries[j]->from.set_text);
+            free(s->entries[j]->label);
             free(s->entries[j]);
         }
         free(s->entries);
         free(s->name);
         free(s->from.set_text);
+        free(s->label);
         free(s);
     }
     free(c->sections);
@@ -385,17 +432,10 @@ static int diag_flush(diag_list *d, FILE *out)
     return n;
 }
 
+/* Where an error message points: a default has no line, so the file itself. */
 static char *where_text(const fsi_case *c, const origin *o)
 {
-    switch (o->kind) {
-    case FROM_FILE:
-        return xasprintf("%s:%d", c->path, o->line);
-    case FROM_SET:
-        return xasprintf("--set %s", o->set_text);
-    case FROM_DEFAULT:
-        break;
-    }
-    return xstrdup(c->path);
+    return origin_text(c, o, c->path);
 }
 
 /* Adds "WHERE: [section] key: message", "WHERE: [section]: message" (no key) or
@@ -505,7 +545,7 @@ static void section_line(read_state *st, const char *text)
         free(msg);
         return;
     }
-    char *name = trimmed_copy(text + 1, (size_t)(close - text - 1));
+    char *name = section_name_copy(text + 1, (size_t)(close - text - 1));
     if (!*name) {
         reject_section_line(st, "syntax error: empty section name");
     } else if (find_section(st->c, name)) {
@@ -585,7 +625,7 @@ static int on_key(void *user, const char *inih_section, const char *name, const 
                "given twice (first at %s:%d)", st->c->path, old->from.line);
         return 1;
     }
-    add_entry(st->current, name, value, &here);
+    add_entry(st->c, st->current, name, value, &here);
     return 1;
 }
 
@@ -656,11 +696,42 @@ static const char *bad_value_reason(const char *value)
     return NULL;
 }
 
+/* The '.' between section and key in "section.key=value": the last one before
+ * the '=', because object section names hold dots ("solid.block beam.max=1") and
+ * keys do not; NULL when there is none. */
+static const char *key_dot(const char *assignment, const char *eq)
+{
+    const char *dot = NULL;
+    for (const char *p = assignment; p < eq; p++)
+        if (*p == '.')
+            dot = p;
+    return dot;
+}
+
+static void set_value(fsi_case *c, const char *sec, const char *key, const char *value,
+                      const origin *from)
+{
+    section *s = find_section(c, sec);
+    if (!s)
+        s = add_section(c, sec, from);
+    entry *e = find_entry(s, key);
+    if (!e) {
+        add_entry(c, s, key, value, from);
+        return;
+    }
+    free(e->value);
+    free(e->from.set_text);
+    free(e->label);
+    e->value = xstrdup(value);
+    e->from = origin_copy(from);
+    e->label = origin_label(c, from);
+}
+
 int fsi_case_override(fsi_case *c, const char *assignment, FILE *errors)
 {
     const char *eq = strchr(assignment, '=');
-    const char *dot = strchr(assignment, '.');
-    if (!eq || !dot || dot > eq) {
+    const char *dot = eq ? key_dot(assignment, eq) : NULL;
+    if (!dot) {
         if (errors)
             fprintf(errors, "--set %s: expected section.key=value\n", assignment);
         return -1;
@@ -670,7 +741,7 @@ int fsi_case_override(fsi_case *c, const char *assignment, FILE *errors)
             fprintf(errors, "--set %s: may not contain a line break\n", assignment);
         return -1;
     }
-    char *sec = trimmed_copy(assignment, (size_t)(dot - assignment));
+    char *sec = section_name_copy(assignment, (size_t)(dot - assignment));
     char *key = trimmed_copy(dot + 1, (size_t)(eq - dot - 1));
     char *value = trimmed_copy(eq + 1, strlen(eq + 1));
     const char *why = NULL;
@@ -683,31 +754,18 @@ int fsi_case_override(fsi_case *c, const char *assignment, FILE *errors)
         why = why_text = xasprintf("key '%s' %s", key, bad_key_reason(key));
     else
         why = bad_value_reason(value);
-    int rc = 0;
     if (why) {
         if (errors)
             fprintf(errors, "--set %s: %s\n", assignment, why);
-        rc = -1;
     } else {
         origin from = { FROM_SET, ++c->n_overrides, (char *)assignment };
-        section *s = find_section(c, sec);
-        if (!s)
-            s = add_section(c, sec, &from);
-        entry *e = find_entry(s, key);
-        if (e) {
-            free(e->value);
-            free(e->from.set_text);
-            e->value = xstrdup(value);
-            e->from = origin_copy(&from);
-        } else {
-            add_entry(s, key, value, &from);
-        }
+        set_value(c, sec, key, value, &from);
     }
     free(why_text);
     free(sec);
     free(key);
     free(value);
-    return rc;
+    return why ? -1 : 0;
 }
 
 /* ---------------------------------------------------------------- values */
@@ -845,7 +903,7 @@ static int choice_matches(const char *choices, const char *value)
     return match;
 }
 
-static char *choices_text(const char *choices)
+char *fsi_case_choices_text(const char *choices)
 {
     name_list words = { 0 };
     char *buf = choice_words(choices, &words);
@@ -873,15 +931,15 @@ static char *bound_problem(const fsi_key_spec *k, const char *text, double x)
 {
     char num[40];
     if ((k->bounds & FSI_BOUND_MIN_OPEN) && !(x > k->min)) {
-        format_number(k->min, num, sizeof num);
+        fsi_case_format_number(k->min, num, sizeof num);
         return xasprintf("%s must be > %s", text, num);
     }
     if ((k->bounds & FSI_BOUND_MIN) && !(x >= k->min)) {
-        format_number(k->min, num, sizeof num);
+        fsi_case_format_number(k->min, num, sizeof num);
         return xasprintf("%s must be >= %s", text, num);
     }
     if ((k->bounds & FSI_BOUND_MAX) && !(x <= k->max)) {
-        format_number(k->max, num, sizeof num);
+        fsi_case_format_number(k->max, num, sizeof num);
         return xasprintf("%s must be <= %s", text, num);
     }
     return NULL;
@@ -934,13 +992,29 @@ static char *value_problem(const fsi_key_spec *k, const char *text)
 
 /* The key tables that apply to one section, and keys handled elsewhere. */
 typedef struct {
-    const fsi_key_table *tables[2];
-    int n_tables;
+    const fsi_key_table **tables;
+    int n_tables, cap_tables;
     const char *skip[3];        /* NULL-terminated: keys the caller checks itself */
     int report_unknown;         /* 0 for external solvers (pass-through) */
-    const char *unknown_hint;   /* e.g. "solver spring_oscillators" */
+    const char *unknown_hint;   /* e.g. " with solver spring_oscillators" */
     name_list suggested;        /* keys offered as "did you mean" */
 } key_scope;
+
+static void scope_add(key_scope *sc, const fsi_key_table *t)
+{
+    if (!t)
+        return;
+    sc->tables = grow(sc->tables, sc->n_tables, &sc->cap_tables, sizeof *sc->tables);
+    sc->tables[sc->n_tables++] = t;
+}
+
+static void scope_free(key_scope *sc)
+{
+    free(sc->tables);
+    sc->tables = NULL;
+    sc->n_tables = sc->cap_tables = 0;
+    names_free(&sc->suggested);
+}
 
 static int scope_skips(const key_scope *sc, const char *key)
 {
@@ -975,9 +1049,8 @@ static void report_unknown_key(diag_list *d, const fsi_case *c, const section *s
         names_add(&sc->suggested, guess);
     } else {
         char *list = names_join(&known, ", ");
-        report(d, c, &e->from, s->name, e->key, "unknown key '%s' (known keys%s%s: %s)", e->key,
-               sc->unknown_hint ? " with " : "", sc->unknown_hint ? sc->unknown_hint : "",
-               list);
+        report(d, c, &e->from, s->name, e->key, "unknown key '%s' (known keys%s: %s)", e->key,
+               sc->unknown_hint ? sc->unknown_hint : "", list);
         free(list);
     }
     names_free(&known);
@@ -1020,11 +1093,18 @@ static void fill_defaults(diag_list *d, const fsi_case *c, section *s, const key
             for (int j = 0; j < sc->suggested.n; j++)
                 suggested |= strcmp(sc->suggested.items[j], k->key) == 0;
             if (k->default_value)
-                add_entry(s, k->key, k->default_value, &by_default);
+                add_entry(c, s, k->key, k->default_value, &by_default);
             else if (!suggested)
                 report(d, c, &s->from, s->name, k->key, "required key missing");
         }
     }
+}
+
+static void check_section(diag_list *d, const fsi_case *c, section *s, key_scope *sc)
+{
+    check_entries(d, c, s, sc);
+    fill_defaults(d, c, s, sc);
+    scope_free(sc);
 }
 
 static const fsi_key_table *find_table(const fsi_key_table *tables, int n, const char *name)
@@ -1035,12 +1115,13 @@ static const fsi_key_table *find_table(const fsi_key_table *tables, int n, const
     return NULL;
 }
 
-static int is_role(const fsi_case_schema *schema, const char *name)
+/* Index of the participant section 'name' in the schema, or -1. */
+static int role_index(const fsi_case_schema *schema, const char *name)
 {
     for (int i = 0; i < schema->n_roles; i++)
         if (strcmp(schema->roles[i], name) == 0)
-            return 1;
-    return 0;
+            return i;
+    return -1;
 }
 
 static const fsi_solver_spec *find_solver(const fsi_case_schema *schema, const char *name)
@@ -1049,6 +1130,41 @@ static const fsi_solver_spec *find_solver(const fsi_case_schema *schema, const c
         if (strcmp(schema->solvers[i].name, name) == 0)
             return &schema->solvers[i];
     return NULL;
+}
+
+static const fsi_object_kind *find_kind(const fsi_solver_spec *spec, const char *kind)
+{
+    for (int i = 0; i < spec->n_objects; i++)
+        if (strcmp(spec->objects[i].kind, kind) == 0)
+            return &spec->objects[i];
+    return NULL;
+}
+
+typedef enum {
+    ROLE_ABSENT,        /* no participant section */
+    ROLE_UNSURE,        /* its solver is missing or wrong: already an error there */
+    ROLE_EXTERNAL,      /* solver = external: everything passes through */
+    ROLE_SOLVER         /* a solver of the schema for this role */
+} role_state;
+
+/* What the participant section 'role' says about its solver. */
+static role_state role_solver(const fsi_case *c, const fsi_case_schema *schema,
+                              const char *role, const fsi_solver_spec **spec)
+{
+    *spec = NULL;
+    const section *s = find_section(c, role);
+    if (!s)
+        return ROLE_ABSENT;
+    const entry *e = find_entry(s, "solver");
+    if (!e || !*e->value)
+        return ROLE_UNSURE;
+    if (strcmp(e->value, "external") == 0)
+        return ROLE_EXTERNAL;
+    const fsi_solver_spec *found = find_solver(schema, e->value);
+    if (!found || strcmp(found->role, role) != 0)
+        return ROLE_UNSURE;
+    *spec = found;
+    return ROLE_SOLVER;
 }
 
 static void role_solvers(const fsi_case_schema *schema, const char *role, name_list *out)
@@ -1097,8 +1213,7 @@ static void validate_participant(diag_list *d, const fsi_case *c, section *s,
                                  const fsi_case_schema *schema)
 {
     key_scope sc = { .skip = { "solver", NULL, NULL }, .report_unknown = 1 };
-    if (schema->participant)
-        sc.tables[sc.n_tables++] = schema->participant;
+    scope_add(&sc, schema->participant);
     const entry *solver = find_entry(s, "solver");
     char *hint = NULL;
     if (!solver) {
@@ -1117,16 +1232,181 @@ static void validate_participant(diag_list *d, const fsi_case *c, section *s,
             report_bad_solver(d, c, s, solver, schema);
             sc.report_unknown = 0;
         } else {
-            if (spec->keys)
-                sc.tables[sc.n_tables++] = spec->keys;
-            hint = xasprintf("solver %s", spec->name);
+            for (int i = 0; i < spec->n_key_tables; i++)
+                scope_add(&sc, spec->key_tables[i]);
+            hint = xasprintf(" with solver %s", spec->name);
             sc.unknown_hint = hint;
         }
     }
-    check_entries(d, c, s, &sc);
-    fill_defaults(d, c, s, &sc);
-    names_free(&sc.suggested);
+    check_section(d, c, s, &sc);
     free(hint);
+}
+
+/* ----------------------------------------------------------- object sections */
+
+/* "ROLE.KIND NAME" taken apart; role and kind are copies, name points into the
+ * section name ("" when it has none). */
+typedef struct {
+    char *role;
+    char *kind;
+    const char *name;
+} object_header;
+
+/* Splits a section name whose first word holds a '.'; returns 0 for any other. */
+static int split_object_header(const char *section_name, object_header *h)
+{
+    const char *blank = strchr(section_name, ' ');
+    size_t word = blank ? (size_t)(blank - section_name) : strlen(section_name);
+    const char *dot = memchr(section_name, '.', word);
+    if (!dot)
+        return 0;
+    h->role = xstrndup(section_name, (size_t)(dot - section_name));
+    h->kind = xstrndup(dot + 1, word - (size_t)(dot + 1 - section_name));
+    h->name = blank ? blank + 1 : "";
+    return 1;
+}
+
+static void free_object_header(object_header *h)
+{
+    free(h->role);
+    free(h->kind);
+}
+
+/* Object names are one word so that --set, the resolved file and messages can
+ * quote them without ambiguity; ASCII only, whatever the locale. */
+static int is_name_char(char ch)
+{
+    return (ch >= 'a' && ch <= 'z') || (ch >= 'A' && ch <= 'Z') || (ch >= '0' && ch <= '9') ||
+           ch == '_' || ch == '-';
+}
+
+/* Returns 0 when the name is missing: such a header is no object a solver will
+ * see (fsi_case_objects skips it), so its keys are not worth reporting. */
+static int check_object_name(diag_list *d, const fsi_case *c, const section *s,
+                             const object_header *h)
+{
+    if (!*h->name) {
+        report(d, c, &s->from, s->name, NULL,
+               "object name missing (object sections are written [%s.%s NAME])", h->role,
+               h->kind);
+        return 0;
+    }
+    for (const char *p = h->name; *p; p++) {
+        if (!is_name_char(*p)) {
+            report(d, c, &s->from, s->name, NULL,
+                   "object name '%s' must be one word of letters, digits, '_' and '-'",
+                   h->name);
+            break;
+        }
+    }
+    return 1;
+}
+
+static void report_unknown_role(diag_list *d, const fsi_case *c, const section *s,
+                                const fsi_case_schema *schema, const char *role)
+{
+    name_list roles = { 0 };
+    for (int i = 0; i < schema->n_roles; i++)
+        names_add(&roles, schema->roles[i]);
+    const char *guess = closest_name(role, &roles);
+    char *hint = guess ? xasprintf(" (did you mean '%s'?)", guess) : xstrdup("");
+    char *list = names_join(&roles, ", ");
+    report(d, c, &s->from, s->name, NULL,
+           "unknown participant '%s'%s; object sections are written [ROLE.KIND NAME] with "
+           "ROLE one of: %s", role, hint, list);
+    free(list);
+    free(hint);
+    names_free(&roles);
+}
+
+static void report_unknown_kind(diag_list *d, const fsi_case *c, const section *s,
+                                const fsi_solver_spec *spec, const char *kind)
+{
+    if (spec->n_objects == 0) {
+        report(d, c, &s->from, s->name, NULL,
+               "unknown object kind '%s' for solver %s (it takes no object sections)", kind,
+               spec->name);
+        return;
+    }
+    name_list kinds = { 0 };
+    for (int i = 0; i < spec->n_objects; i++)
+        names_add(&kinds, spec->objects[i].kind);
+    const char *guess = closest_name(kind, &kinds);
+    char *hint = guess ? xasprintf("did you mean '%s'? ", guess) : xstrdup("");
+    char *list = names_join(&kinds, ", ");
+    report(d, c, &s->from, s->name, NULL, "unknown object kind '%s' for solver %s (%skinds: %s)",
+           kind, spec->name, hint, list);
+    free(list);
+    free(hint);
+    names_free(&kinds);
+}
+
+static void check_object_keys(diag_list *d, const fsi_case *c, section *s,
+                              const object_header *h, const fsi_object_kind *kind)
+{
+    key_scope sc = { .report_unknown = 1 };
+    scope_add(&sc, kind->keys);
+    char *hint = xasprintf(" of [%s.%s NAME]", h->role, h->kind);
+    sc.unknown_hint = hint;
+    check_section(d, c, s, &sc);
+    free(hint);
+}
+
+/* An object section [ROLE.KIND NAME] (the name's first word holds a '.'). Its
+ * keys are checked only when its participant runs a solver of the schema:
+ * external programs get theirs unchecked, and when the participant's solver is
+ * wrong that is the one error to report. The name is checked in every case,
+ * because --set and the resolved file rely on its form. */
+static void validate_object(diag_list *d, const fsi_case *c, section *s,
+                            const fsi_case_schema *schema, const object_header *h)
+{
+    if (role_index(schema, h->role) < 0) {
+        report_unknown_role(d, c, s, schema, h->role);
+        return;
+    }
+    if (!*h->kind) {
+        report(d, c, &s->from, s->name, NULL,
+               "object kind missing (object sections are written [%s.KIND NAME])", h->role);
+        return;
+    }
+    int named = check_object_name(d, c, s, h);
+    const fsi_solver_spec *spec;
+    switch (role_solver(c, schema, h->role, &spec)) {
+    case ROLE_ABSENT:
+        report(d, c, &s->from, s->name, NULL, "no [%s] section (the participant this object "
+               "belongs to)", h->role);
+        break;
+    case ROLE_UNSURE:
+    case ROLE_EXTERNAL:
+        break;
+    case ROLE_SOLVER: {
+        const fsi_object_kind *kind = find_kind(spec, h->kind);
+        if (!kind)
+            report_unknown_kind(d, c, s, spec, h->kind);
+        else if (named)
+            check_object_keys(d, c, s, h, kind);
+        break;
+    }
+    }
+}
+
+/* Too few objects of a kind is reported at the participant's header: that is
+ * where the missing section would go. */
+static void check_object_counts(diag_list *d, const fsi_case *c, const fsi_case_schema *schema,
+                                const char *role)
+{
+    const fsi_solver_spec *spec;
+    if (role_solver(c, schema, role, &spec) != ROLE_SOLVER)
+        return;
+    const section *s = find_section(c, role);
+    for (int i = 0; i < spec->n_objects; i++) {
+        const fsi_object_kind *k = &spec->objects[i];
+        int n = fsi_case_objects(c, role, k->kind, NULL, 0);
+        if (n < k->min_count)
+            report(d, c, &s->from, role, NULL,
+                   "solver %s needs at least %d [%s.%s NAME] section%s, found %d", spec->name,
+                   k->min_count, role, k->kind, k->min_count == 1 ? "" : "s", n);
+    }
 }
 
 static void report_unknown_section(diag_list *d, const fsi_case *c, const section *s,
@@ -1139,11 +1419,16 @@ static void report_unknown_section(diag_list *d, const fsi_case *c, const sectio
         names_add(&known, schema->roles[i]);
     const char *guess = closest_name(s->name, &known);
     char *list = names_join(&known, ", ");
+    /* "[solid block]": the dot of an object section forgotten */
+    const char *objects = strchr(s->name, ' ') ? "; object sections are written [ROLE.KIND NAME]"
+                                               : "";
     if (guess)
-        report(d, c, &s->from, NULL, NULL, "unknown section [%s] (did you mean [%s]? known: %s)",
-               s->name, guess, list);
+        report(d, c, &s->from, NULL, NULL,
+               "unknown section [%s] (did you mean [%s]? known: %s)%s", s->name, guess, list,
+               objects);
     else
-        report(d, c, &s->from, NULL, NULL, "unknown section [%s] (known: %s)", s->name, list);
+        report(d, c, &s->from, NULL, NULL, "unknown section [%s] (known: %s)%s", s->name, list,
+               objects);
     free(list);
     names_free(&known);
 }
@@ -1167,33 +1452,266 @@ static void add_absent_sections(diag_list *d, fsi_case *c, const fsi_case_schema
             free(list);
         } else {
             section *s = add_section(c, t->name, &by_default);
-            key_scope sc = { .tables = { t }, .n_tables = 1 };
+            key_scope sc = { .report_unknown = 0 };
+            scope_add(&sc, t);
             fill_defaults(d, c, s, &sc);
+            scope_free(&sc);
         }
         names_free(&required);
     }
 }
 
+/* ------------------------------------------------------------ the schema */
+
+static void schema_flaw(diag_list *d, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
+static void schema_flaw(diag_list *d, const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    char *msg = xvasprintf(fmt, ap);
+    va_end(ap);
+    diag_add(d, RANK_FILE, 0, xasprintf("internal error in the case schema: %s", msg));
+    free(msg);
+}
+
+/* The tables 'tables[0..n)' all apply to one section ('owner' in messages): a key
+ * may appear in only one of them, once, and its default must pass its own rule
+ * (a default is written to the resolved file, and reading that back checks it). */
+static void check_key_set(diag_list *d, const char *owner, const fsi_key_table *const *tables,
+                          int n)
+{
+    for (int t = 0; t < n; t++) {
+        if (!tables[t])
+            continue;
+        for (int i = 0; i < tables[t]->n_keys; i++) {
+            const fsi_key_spec *k = &tables[t]->keys[i];
+            for (int u = 0; u <= t; u++) {
+                if (!tables[u])
+                    continue;
+                int end = u == t ? i : tables[u]->n_keys;
+                for (int j = 0; j < end; j++)
+                    if (strcmp(tables[u]->keys[j].key, k->key) == 0)
+                        schema_flaw(d, "%s: key '%s' is defined in table '%s' and again in "
+                                    "table '%s'", owner, k->key, tables[u]->name,
+                                    tables[t]->name);
+            }
+            char *why = k->default_value ? value_problem(k, k->default_value) : NULL;
+            if (why) {
+                schema_flaw(d, "%s: default of key '%s' in table '%s': %s", owner, k->key,
+                            tables[t]->name, why);
+                free(why);
+            }
+        }
+    }
+}
+
+static void check_solver_objects(diag_list *d, const fsi_solver_spec *sv)
+{
+    for (int i = 0; i < sv->n_objects; i++) {
+        const fsi_object_kind *k = &sv->objects[i];
+        char *owner = xasprintf("solver %s, [%s.%s NAME]", sv->name, sv->role, k->kind);
+        int bad_name = !*k->kind;
+        for (const char *p = k->kind; *p; p++)
+            bad_name |= !is_name_char(*p);
+        if (bad_name)
+            schema_flaw(d, "%s: an object kind is one word of letters, digits, '_' and '-'",
+                        owner);
+        for (int j = 0; j < i; j++)
+            if (strcmp(sv->objects[j].kind, k->kind) == 0)
+                schema_flaw(d, "%s: object kind declared twice", owner);
+        check_key_set(d, owner, &k->keys, 1);
+        free(owner);
+    }
+}
+
+static void check_solver(diag_list *d, const fsi_case_schema *schema, int index)
+{
+    const fsi_solver_spec *sv = &schema->solvers[index];
+    char *owner = xasprintf("solver %s", sv->name);
+    for (int j = 0; j < index; j++)
+        if (strcmp(schema->solvers[j].name, sv->name) == 0)
+            schema_flaw(d, "%s: two solvers have this name", owner);
+    if (strcmp(sv->name, "external") == 0)
+        schema_flaw(d, "%s: the name 'external' is reserved", owner);
+    if (role_index(schema, sv->role) < 0)
+        schema_flaw(d, "%s: role '%s' is not a participant section", owner, sv->role);
+    /* The participant section holds the common keys and all of the solver's. */
+    const fsi_key_table **tables = xrealloc(NULL, (size_t)(sv->n_key_tables + 1) * sizeof *tables);
+    tables[0] = schema->participant;
+    for (int i = 0; i < sv->n_key_tables; i++)
+        tables[i + 1] = sv->key_tables[i];
+    check_key_set(d, owner, tables, sv->n_key_tables + 1);
+    free(tables);
+    free(owner);
+    check_solver_objects(d, sv);
+}
+
+static void schema_flaws(diag_list *d, const fsi_case_schema *schema)
+{
+    for (int i = 0; i < schema->n_sections; i++) {
+        const fsi_key_table *t = &schema->sections[i];
+        char *owner = xasprintf("[%s]", t->name);
+        if (find_table(schema->sections, i, t->name) || role_index(schema, t->name) >= 0)
+            schema_flaw(d, "%s: section defined twice", owner);
+        check_key_set(d, owner, &t, 1);
+        free(owner);
+    }
+    if (schema->participant) {
+        const fsi_key_table *p = schema->participant;
+        check_key_set(d, "participant sections", &p, 1);
+    }
+    for (int i = 0; i < schema->n_solvers; i++)
+        check_solver(d, schema, i);
+}
+
+int fsi_case_schema_check(const fsi_case_schema *schema, FILE *errors)
+{
+    diag_list diags = { 0 };
+    schema_flaws(&diags, schema);
+    return diag_flush(&diags, errors);
+}
+
+/* ------------------------------------------------------------- validate */
+
+/* A stream for solver checks when the caller wants no messages. */
+static FILE *null_stream(void)
+{
+    FILE *f = fopen("/dev/null", "w");
+    if (!f)
+        f = tmpfile();
+    if (!f) {
+        fputs("fsi_case: cannot open a scratch stream\n", stderr);
+        abort();
+    }
+    return f;
+}
+
+/* Runs the semantic check of every participant whose sections passed the key
+ * checks (role_errors[r] == 0): a check may then rely on every key's value. */
+static int run_solver_checks(const fsi_case *c, const fsi_case_schema *schema,
+                             const int *role_errors, FILE *errors)
+{
+    int n = 0;
+    FILE *out = errors;
+    for (int r = 0; r < schema->n_roles; r++) {
+        const fsi_solver_spec *spec;
+        if (role_errors[r] || role_solver(c, schema, schema->roles[r], &spec) != ROLE_SOLVER ||
+            !spec->check)
+            continue;
+        if (!out)
+            out = null_stream();
+        int k = spec->check(c, schema->roles[r], out);
+        if (k < 0) {    /* a check that fails without saying why still fails the case */
+            fprintf(out, "internal error: the check of solver %s returned %d\n", spec->name, k);
+            k = 1;
+        }
+        n += k;
+    }
+    if (out && out != errors)
+        fclose(out);
+    else if (out)
+        fflush(out);
+    return n;
+}
+
+/* Checks one section the file (or --set) gave; returns the index of the role it
+ * belongs to (a participant section or one of its objects), or -1. */
+static int validate_section(diag_list *d, const fsi_case *c, section *s,
+                            const fsi_case_schema *schema)
+{
+    const fsi_key_table *t = find_table(schema->sections, schema->n_sections, s->name);
+    int role = role_index(schema, s->name);
+    object_header h;
+    if (t) {
+        key_scope sc = { .report_unknown = 1 };
+        scope_add(&sc, t);
+        check_section(d, c, s, &sc);
+    } else if (role >= 0) {
+        validate_participant(d, c, s, schema);
+    } else if (split_object_header(s->name, &h)) {
+        validate_object(d, c, s, schema, &h);
+        role = role_index(schema, h.role);
+        free_object_header(&h);
+    } else {
+        report_unknown_section(d, c, s, schema);
+    }
+    return role;
+}
+
 int fsi_case_validate(fsi_case *c, const fsi_case_schema *schema, FILE *errors)
 {
     diag_list diags = { 0 };
+    schema_flaws(&diags, schema);
+    int schema_errors = diags.n;
+    /* Messages are counted per participant, so that a solver's check runs only
+     * when everything it reads is known to be valid. */
+    int *role_errors = xrealloc(NULL, (size_t)(schema->n_roles + 1) * sizeof *role_errors);
+    for (int r = 0; r < schema->n_roles; r++)
+        role_errors[r] = schema_errors;
     int n_present = c->n_sections;
     for (int i = 0; i < n_present; i++) {
-        section *s = c->sections[i];
-        const fsi_key_table *t = find_table(schema->sections, schema->n_sections, s->name);
-        if (t) {
-            key_scope sc = { .tables = { t }, .n_tables = 1, .report_unknown = 1 };
-            check_entries(&diags, c, s, &sc);
-            fill_defaults(&diags, c, s, &sc);
-            names_free(&sc.suggested);
-        } else if (is_role(schema, s->name)) {
-            validate_participant(&diags, c, s, schema);
-        } else {
-            report_unknown_section(&diags, c, s, schema);
-        }
+        int before = diags.n;
+        int r = validate_section(&diags, c, c->sections[i], schema);
+        if (r >= 0)
+            role_errors[r] += diags.n - before;
+    }
+    for (int r = 0; r < schema->n_roles; r++) {
+        int before = diags.n;
+        check_object_counts(&diags, c, schema, schema->roles[r]);
+        role_errors[r] += diags.n - before;
     }
     add_absent_sections(&diags, c, schema);
-    return diag_flush(&diags, errors);
+    int n = diag_flush(&diags, errors);
+    n += run_solver_checks(c, schema, role_errors, errors);
+    free(role_errors);
+    return n;
+}
+
+/* ------------------------------------------------------------- objects */
+
+/* True when 'name' is "ROLE.KIND NAME" for this role and kind, NAME not empty. */
+static int is_object_of(const char *name, const char *role, const char *kind)
+{
+    size_t lr = strlen(role), lk = strlen(kind);
+    return strncmp(name, role, lr) == 0 && name[lr] == '.' &&
+           strncmp(name + lr + 1, kind, lk) == 0 && name[lr + 1 + lk] == ' ' &&
+           name[lr + 2 + lk] != '\0';
+}
+
+int fsi_case_objects(const fsi_case *c, const char *role, const char *kind,
+                     const char **sections, int max_sections)
+{
+    int n = 0;
+    for (int i = 0; i < c->n_sections; i++) {
+        if (!is_object_of(c->sections[i]->name, role, kind))
+            continue;
+        if (n < max_sections)
+            sections[n] = c->sections[i]->name;
+        n++;
+    }
+    return n;
+}
+
+const char *fsi_case_object_name(const char *section_name)
+{
+    const char *blank = strchr(section_name, ' ');
+    if (!blank || !blank[1])
+        return NULL;
+    const char *dot = memchr(section_name, '.', (size_t)(blank - section_name));
+    if (!dot || dot == section_name || dot + 1 == blank)
+        return NULL;
+    return blank + 1;
+}
+
+const char *fsi_case_origin(const fsi_case *c, const char *section_name, const char *key)
+{
+    const section *s = find_section(c, section_name);
+    if (!s)
+        return NULL;
+    if (!key)
+        return s->label;
+    const entry *e = find_entry(s, key);
+    return e ? e->label : NULL;
 }
 
 /* ---------------------------------------------------------------- getters */
@@ -1256,173 +1774,34 @@ int fsi_case_get_vector(const fsi_case *c, const char *section_name, const char 
  * holds INI_MAX_LINE bytes including the line end and the terminating NUL. */
 enum { WRITE_MAX_LINE = INI_MAX_LINE - 3, WRITE_ALIGN = 32 };
 
-static void write_entry(const fsi_case *c, const entry *e, FILE *out)
+static void write_entry(const entry *e, FILE *out)
 {
-    char *where = e->from.kind == FROM_DEFAULT ? xstrdup("default") : where_text(c, &e->from);
     size_t len = strlen(e->key) + 3 + strlen(e->value);
     size_t pad = len < WRITE_ALIGN ? WRITE_ALIGN - len : 0;
-    if (len + pad + 5 + strlen(where) <= WRITE_MAX_LINE)
-        fprintf(out, "%s = %s%*s ; # %s\n", e->key, e->value, (int)pad, "", where);
+    if (len + pad + 5 + strlen(e->label) <= WRITE_MAX_LINE)
+        fprintf(out, "%s = %s%*s ; # %s\n", e->key, e->value, (int)pad, "", e->label);
     else    /* a long origin (deep path) goes above, so the key line stays short */
-        fprintf(out, "# %s\n%s = %s\n", where, e->key, e->value);
-    free(where);
+        fprintf(out, "# %s\n%s = %s\n", e->label, e->key, e->value);
+}
+
+/* Section lines are read by our own reader, not inih, so a comment after the
+ * header may be of any length. */
+static void write_header(const section *s, FILE *out)
+{
+    size_t len = strlen(s->name) + 2;
+    size_t pad = len < WRITE_ALIGN ? WRITE_ALIGN - len : 0;
+    fprintf(out, "\n[%s]%*s ; # %s\n", s->name, (int)pad, "", s->label);
 }
 
 void fsi_case_write_resolved(const fsi_case *c, FILE *out)
 {
-    fprintf(out, "# Resolved case read from %s: every key with its value and, in a\n"
-                 "# comment, where the value came from.\n", c->path);
+    fprintf(out, "# Resolved case read from %s: every section and key with its value and,\n"
+                 "# in a comment, where it came from.\n", c->path);
     for (int i = 0; i < c->n_sections; i++) {
         const section *s = c->sections[i];
-        fprintf(out, "\n[%s]\n", s->name);
+        write_header(s, out);
         for (int j = 0; j < s->n_entries; j++)
-            write_entry(c, s->entries[j], out);
+            write_entry(s->entries[j], out);
     }
     fflush(out);
-}
-
-/* --------------------------------------------------------------- markdown */
-
-static const char *type_name(fsi_key_type t)
-{
-    switch (t) {
-    case FSI_KEY_REAL: return "real";
-    case FSI_KEY_INT: return "integer";
-    case FSI_KEY_BOOL: return "bool";
-    case FSI_KEY_STRING: return "string";
-    case FSI_KEY_CHOICE: return "choice";
-    case FSI_KEY_VECTOR: return "vector";
-    }
-    return "?";
-}
-
-/* Writes text for a table cell: '|' would end the cell, line breaks the row. */
-static void md_cell(const char *text, FILE *out)
-{
-    for (const char *p = text ? text : ""; *p; p++) {
-        if (*p == '|')
-            fputs("\\|", out);
-        else if (*p == '\n' || *p == '\r')
-            fputc(' ', out);
-        else
-            fputc(*p, out);
-    }
-}
-
-static char *allowed_text(const fsi_key_spec *k)
-{
-    char lo[40], hi[40];
-    format_number(k->min, lo, sizeof lo);
-    format_number(k->max, hi, sizeof hi);
-    switch (k->type) {
-    case FSI_KEY_REAL:
-    case FSI_KEY_INT: {
-        int open = k->bounds & FSI_BOUND_MIN_OPEN;
-        int has_min = open || (k->bounds & FSI_BOUND_MIN);
-        int has_max = k->bounds & FSI_BOUND_MAX;
-        if (has_min && has_max)
-            return open ? xasprintf("> %s and <= %s", lo, hi) : xasprintf("%s .. %s", lo, hi);
-        if (has_min)
-            return xasprintf("%s %s", open ? ">" : ">=", lo);
-        if (has_max)
-            return xasprintf("<= %s", hi);
-        return xstrdup("");
-    }
-    case FSI_KEY_BOOL:
-        return xstrdup("true, false");
-    case FSI_KEY_CHOICE:
-        return choices_text(k->choices);
-    case FSI_KEY_VECTOR:
-        return xasprintf("%d numbers", FSI_DIM);
-    case FSI_KEY_STRING:
-        break;
-    }
-    return xstrdup("");
-}
-
-static void md_table(const fsi_key_table *t, FILE *out)
-{
-    fputs("| key | type | unit | default | allowed | meaning |\n"
-          "|---|---|---|---|---|---|\n", out);
-    for (int i = 0; i < t->n_keys; i++) {
-        const fsi_key_spec *k = &t->keys[i];
-        fputs("| `", out);
-        md_cell(k->key, out);
-        fprintf(out, "` | %s | ", type_name(k->type));
-        md_cell(k->unit, out);
-        fputs(" | ", out);
-        if (!k->default_value) {
-            fputs("required", out);
-        } else if (!*k->default_value) {
-            fputs("(empty)", out);
-        } else {
-            fputc('`', out);
-            md_cell(k->default_value, out);
-            fputc('`', out);
-        }
-        fputs(" | ", out);
-        char *allowed = allowed_text(k);
-        md_cell(allowed, out);
-        free(allowed);
-        fputs(" | ", out);
-        md_cell(k->description, out);
-        fputs(" |\n", out);
-    }
-}
-
-static void md_paragraph(const char *text, FILE *out)
-{
-    if (text && *text)
-        fprintf(out, "%s\n\n", text);
-}
-
-static void md_roles_heading(const fsi_case_schema *schema, FILE *out)
-{
-    fputs("\n## Participant sections", out);
-    for (int i = 0; i < schema->n_roles; i++) {
-        const char *sep = i == 0 ? " " : i == schema->n_roles - 1 ? " and " : ", ";
-        fprintf(out, "%s[%s]", sep, schema->roles[i]);
-    }
-    fputs("\n\n", out);
-}
-
-void fsi_case_schema_markdown(const fsi_case_schema *schema, FILE *out)
-{
-    fputs("# Case files\n\n"
-          "A case file is an INI file: `[section]` lines, `key = value` lines and comments "
-          "(lines starting with `#` or `;`, or `;` after a blank at the end of a line). "
-          "Section names and keys are case-sensitive. Any key can be overridden on the "
-          "command line with `--set section.key=value`. This reference is generated from "
-          "the key tables in the code.\n", out);
-    for (int i = 0; i < schema->n_sections; i++) {
-        const fsi_key_table *t = &schema->sections[i];
-        fprintf(out, "\n## [%s]\n\n", t->name);
-        md_paragraph(t->description, out);
-        md_table(t, out);
-    }
-    if (schema->n_roles == 0)
-        return;
-    md_roles_heading(schema, out);
-    fputs("A participant section runs one solver, chosen with `solver = NAME`; it may hold "
-          "the keys below and the keys of the chosen solver. `solver = external` runs the "
-          "program named by `executable` and passes every other key to it unchecked.\n\n",
-          out);
-    if (schema->participant) {
-        md_paragraph(schema->participant->description, out);
-        md_table(schema->participant, out);
-    }
-    for (int i = 0; i < schema->n_solvers; i++) {
-        const fsi_solver_spec *sv = &schema->solvers[i];
-        fprintf(out, "\n### solver = %s (%s)\n\n", sv->name, sv->role);
-        md_paragraph(sv->description, out);
-        if (sv->executable)
-            fprintf(out, "Program: `%s`.\n\n", sv->executable);
-        if (sv->keys && sv->keys->n_keys > 0)
-            md_table(sv->keys, out);
-        else
-            fputs("No keys of its own.\n", out);
-    }
-    fputs("\n### solver = external (any participant)\n\n"
-          "Runs the program given by `executable` (required, non-empty) as the participant; "
-          "all other keys of the section are passed to it as they are.\n", out);
 }

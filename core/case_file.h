@@ -45,6 +45,19 @@ typedef struct {
     int n_keys;
 } fsi_key_table;
 
+typedef struct fsi_case fsi_case;
+
+/* A kind of object section a solver accepts: repeated, named sections that belong
+ * to the participant, written [ROLE.KIND NAME], e.g. [solid.block beam]. NAME is
+ * one word of letters, digits, '_' and '-'; each object's keys are checked against
+ * 'keys' and get its defaults, like an ordinary section. */
+typedef struct {
+    const char *kind;           /* e.g. "block" */
+    const char *description;    /* for docs/cases.md */
+    const fsi_key_table *keys;
+    int min_count;              /* fewer objects of this kind is an error */
+} fsi_object_kind;
+
 /* A solver that can fill a participant section ([fluid] or [solid]):
  * 'solver = name' selects it and makes its keys valid in that section. */
 typedef struct {
@@ -52,7 +65,19 @@ typedef struct {
     const char *role;           /* the section it may appear in: "fluid" or "solid" */
     const char *executable;     /* program in the build's bin directory */
     const char *description;
-    const fsi_key_table *keys;
+    /* The keys of the participant section besides the common ones, in several
+     * tables (e.g. keys every solid model has, material keys, the model's own);
+     * a key may be defined in only one of them. */
+    const fsi_key_table *const *key_tables;
+    int n_key_tables;
+    const fsi_object_kind *objects;     /* object sections it accepts, may be NULL */
+    int n_objects;
+    /* Semantic checks beyond single keys (e.g. overlapping blocks), or NULL. Called
+     * by fsi_case_validate only when the participant section and all its object
+     * sections passed the key checks, so every key has a valid value or default.
+     * Writes each problem as one line "WHERE: message" to 'errors' (see
+     * fsi_case_origin for WHERE) and returns how many it wrote. */
+    int (*check)(const fsi_case *c, const char *role, FILE *errors);
 } fsi_solver_spec;
 
 /* Everything validation needs to know: the fixed sections (e.g. [run]), the keys
@@ -67,25 +92,40 @@ typedef struct {
     int n_solvers;
 } fsi_case_schema;
 
-typedef struct fsi_case fsi_case;
-
 /* Reads a case file. Syntax errors (a line that is neither a section, a key = value
- * nor a comment; a key before any section; a key given twice in a section) are
- * written to 'errors' as "FILE:LINE: message" and NULL is returned. */
+ * nor a comment; a key before any section; a key or a section given twice) are
+ * written to 'errors' as "FILE:LINE: message" and NULL is returned. Blanks inside
+ * a section name are cut to one space: [solid.block   beam] is "solid.block beam". */
 fsi_case *fsi_case_read(const char *path, FILE *errors);
 
 /* Applies a command-line override "section.key=value" (it wins over the file; its
- * origin in messages is "--set section.key=value"). Returns 0, or -1 with a message
- * on 'errors' when the text is not of that form. */
+ * origin in messages is "--set section.key=value"). The key is the text between the
+ * last '.' before the '=' and the '=', the section everything before that '.', so
+ * "solid.block beam.max=1,0.2" sets 'max' in [solid.block beam] (keys containing a
+ * '.' cannot be set this way). An absent section is created. Returns 0, or -1 with
+ * a message on 'errors' when the text is not of that form. */
 int fsi_case_override(fsi_case *c, const char *assignment, FILE *errors);
 
 /* Checks every section and key against the schema and fills in defaults:
  * unknown section, unknown key (with a "did you mean" suggestion), missing required
- * key, bad value (type, bound, choice), unknown solver. Reports ALL errors, each as
- * "FILE:LINE: [section] key: message" (the section's header line for a missing key),
- * and returns how many there were (0 = valid). A participant section whose solver is
- * "external" must have 'executable' and may hold any other keys (passed through). */
+ * key, bad value (type, bound, choice), unknown solver, object sections (unknown
+ * kind, bad name, no participant section, fewer than min_count of a kind: reported
+ * at the participant's header line). Then runs each solver's 'check' whose
+ * participant passed. Reports ALL errors, each as "FILE:LINE: [section] key: message"
+ * (the section's header line for a missing key), and returns how many there were
+ * (0 = valid). A participant section whose solver is "external" must have
+ * 'executable' and may hold any other keys and object sections (passed through;
+ * only the form of their [ROLE.KIND NAME] headers is checked).
+ * Flaws of the schema itself (a key defined twice for one section, a default that
+ * breaks its own rule) are reported as "internal error in the case schema: ...". */
 int fsi_case_validate(fsi_case *c, const fsi_case_schema *schema, FILE *errors);
+
+/* Writes each flaw of the schema to 'errors' (may be NULL) and returns how many
+ * there are: a key defined twice among the tables that apply to one section (for a
+ * solver: the participant table and all its key_tables), two sections, solvers or
+ * object kinds of one name, a default its own key rejects, a solver whose role is
+ * no participant section, an object kind that is not one word. */
+int fsi_case_schema_check(const fsi_case_schema *schema, FILE *errors);
 
 /* True when the case has this section. */
 int fsi_case_has_section(const fsi_case *c, const char *section);
@@ -100,9 +140,29 @@ int fsi_case_get_bool(const fsi_case *c, const char *section, const char *key, i
 /* Fills out[0..FSI_DIM-1]; returns 0, or -1 when absent. */
 int fsi_case_get_vector(const fsi_case *c, const char *section, const char *key, double *out);
 
-/* Writes the resolved case as an INI file: every section, every key including
- * defaults, each line commented with its origin ("# default", "# FILE:LINE",
- * "# --set"). Reading it back gives the same values. */
+/* Object sections [ROLE.KIND NAME] of one kind, in file order (sections created by
+ * --set come after the file's): returns how many there are and puts the first
+ * max_sections of their full section names ("solid.block beam", owned by the case)
+ * in 'sections' (may be NULL when max_sections is 0), ready for the getters. Works
+ * on unvalidated cases too. */
+int fsi_case_objects(const fsi_case *c, const char *role, const char *kind,
+                     const char **sections, int max_sections);
+
+/* The NAME of an object section name "ROLE.KIND NAME" (a pointer into 'section'),
+ * or NULL when 'section' is not of that form. */
+const char *fsi_case_object_name(const char *section);
+
+/* Where a value came from, for messages: "FILE:LINE" for a key of the file,
+ * "--set section.key=value" for an override, "default" for a default, NULL when
+ * the key is absent. With key NULL: where the section starts (its header's
+ * "FILE:LINE", the --set that created it, or "default" for a section the file
+ * lacks). The string belongs to the case. */
+const char *fsi_case_origin(const fsi_case *c, const char *section, const char *key);
+
+/* Writes the resolved case as an INI file: every section (object sections
+ * included), every key including defaults, each section header and key line
+ * commented with its origin ("# default", "# FILE:LINE", "# --set ..."). Reading
+ * it back gives the same sections and values. */
 void fsi_case_write_resolved(const fsi_case *c, FILE *out);
 
 /* The file the case was read from. */
@@ -110,8 +170,9 @@ const char *fsi_case_path(const fsi_case *c);
 
 void fsi_case_free(fsi_case *c);
 
-/* Writes docs/cases.md for a schema: one table per section and per solver with
- * key, type, unit, default (or "required"), allowed range or choices, meaning. */
+/* Writes docs/cases.md for a schema: one table per section, per key table of each
+ * solver and per object kind, with key, type, unit, default (or "required"),
+ * allowed range or choices, meaning. */
 void fsi_case_schema_markdown(const fsi_case_schema *schema, FILE *out);
 
 #endif

@@ -21,13 +21,18 @@ static const fsi_key_table participant_table = {
 
 static const char *const roles[] = {"fluid", "solid"};
 
+static const fsi_key_table *const spring_tables[] = {&fsi_spring_solid_keys};
+static const fsi_key_table *const dashpot_tables[] = {&fsi_dashpot_fluid_keys};
+
+#define N_TABLES(a) ((int)(sizeof(a) / sizeof((a)[0])))
+
 static const fsi_solver_spec solvers[] = {
     {"spring_oscillators", "solid", "fsi-spring-solid",
      "Example solid of independent mass-spring oscillators (examples/spring_solid.c).",
-     &fsi_spring_solid_keys},
+     spring_tables, N_TABLES(spring_tables), NULL, 0, NULL},
     {"linear_dashpot", "fluid", "fsi-dashpot-fluid",
      "Example fluid: a linear dashpot on every solid particle (examples/dashpot_fluid.c).",
-     &fsi_dashpot_fluid_keys},
+     dashpot_tables, N_TABLES(dashpot_tables), NULL, 0, NULL},
 };
 
 static const fsi_case_schema schema = {

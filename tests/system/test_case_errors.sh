@@ -60,6 +60,21 @@ set -e
   || { cat missing.txt; fail "missing case file: status $status"; }
 pass "missing case file: $(head -n 1 missing.txt)"
 
+# Object sections [ROLE.KIND NAME]; appended lines start at 16. The example solvers
+# take no object sections.
+{ cat good.ini; printf '[solid.block beam]\nmin = 0\n'; } >bad.ini
+expect_bad object_kind "^bad.ini:16: \[solid.block beam\]: unknown object kind 'block' for solver spring_oscillators"
+
+{ cat good.ini; printf '[fluid.wall tank]\n[fluid.wall   tank]\n'; } >bad.ini
+expect_bad duplicate_object "^bad.ini:17: section \[fluid.wall tank\] given twice \(first at bad.ini:16\)"
+
+{ sed '/^\[fluid\]/,$d' good.ini; printf '[fluid.wall tank]\n'; } >bad.ini
+expect_bad object_without_participant "^bad.ini:13: \[fluid.wall tank\]: no \[fluid\] section"
+
+cp good.ini bad.ini
+expect_bad set_object "^--set solid.block beam.max=1: \[solid.block beam\]: unknown object kind" \
+  --set "solid.block beam.max=1"
+
 # Several errors are all reported at once.
 sed 's/^particles = 50/particls = 50/; s/^damping = 2.0/damping = -1/' good.ini >bad.ini
 expect_bad two_errors "has 2 errors"

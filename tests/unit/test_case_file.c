@@ -1,9 +1,10 @@
 /* Unit test of core/case_file.c: reading, --set overrides, validation against a
- * small schema built here, error messages (text and line), defaults, the resolved
- * file round trip and the Markdown reference. Exit 0 = pass; every failed check
- * is printed. Scratch files go to $FSI_TEST_TMP/case_file (default /tmp/fsi_test_case). */
+ * small schema built here, error messages (text and line), defaults, object
+ * sections, solver checks, schema flaws, the resolved file round trip and the
+ * Markdown reference. Exit 0 = pass; every failed check is printed. Scratch files go to $FSI_TEST_TMP/case_file (default /tmp/fsi_test_case). */
 #include "case_file.h"
 #include "dim.h"
+#include "solver_registry.h"
 
 #include <errno.h>
 #include <math.h>
@@ -80,16 +81,114 @@ static const fsi_key_spec dashpot_keys[] = {
 };
 static const fsi_key_table dashpot_table = { "linear_dashpot", "Dashpot.", dashpot_keys, 1 };
 
+static const fsi_key_table *const spring_tables[] = { &spring_table };
+static const fsi_key_table *const dashpot_tables[] = { &dashpot_table };
+
+/* A solid made of objects, its keys split over tables the way the real solid
+ * solvers split them: keys of every solid, material keys, the model's own. */
+#if FSI_DIM == 2
+#define VEC_ZERO "0, 0"
+#define VEC_MAX "1, 0.2"
+#define VEC_MAX_SET "2, 0.5"
+#define VEC_SMALL "-1, 0.2"
+#else
+#define VEC_ZERO "0, 0, 0"
+#define VEC_MAX "1, 0.2, 0.1"
+#define VEC_MAX_SET "2, 0.5, 0.1"
+#define VEC_SMALL "-1, 0.2, 0.1"
+#endif
+
+static const fsi_key_spec solid_common_keys[] = {
+    { "time_step", FSI_KEY_REAL, "s", "1e-4", FSI_BOUND_MIN_OPEN, 0, 0, NULL, "Time step." },
+};
+static const fsi_key_table solid_common_table = { "solid_common", "Keys of every solid.",
+                                                  solid_common_keys, 1 };
+
+static const fsi_key_spec material_keys[] = {
+    { "density", FSI_KEY_REAL, "kg/m^3", NULL, FSI_BOUND_MIN_OPEN, 0, 0, NULL, "Density." },
+    { "youngs_modulus", FSI_KEY_REAL, "Pa", "1e9", FSI_BOUND_MIN_OPEN, 0, 0, NULL,
+      "Young's modulus." },
+};
+static const fsi_key_table material_table = { "materials", "Material keys.", material_keys, 2 };
+
+static const fsi_key_spec blocks_own_keys[] = {
+    { "horizon", FSI_KEY_REAL, "-", "3", FSI_BOUND_MIN_OPEN, 0, 0, NULL, "Horizon factor." },
+};
+static const fsi_key_table blocks_own_table = { "blocks", "Keys of the block solid.",
+                                                blocks_own_keys, 1 };
+
+static const fsi_key_table *const blocks_tables[] = { &solid_common_table, &material_table,
+                                                      &blocks_own_table };
+
+static const fsi_key_spec block_keys[] = {
+    { "min", FSI_KEY_VECTOR, "m", NULL, 0, 0, 0, NULL, "Lower corner." },
+    { "max", FSI_KEY_VECTOR, "m", NULL, 0, 0, 0, NULL, "Upper corner." },
+    { "spacing", FSI_KEY_REAL, "m", "0.01", FSI_BOUND_MIN_OPEN, 0, 0, NULL, "Particle spacing." },
+};
+static const fsi_key_table block_table = { "block", "A box of particles.", block_keys, 3 };
+
+static const fsi_key_spec region_keys[] = {
+    { "select", FSI_KEY_CHOICE, "-", "inside", 0, 0, 0, "inside|outside", "Which particles." },
+    { "fixed", FSI_KEY_BOOL, "-", "no", 0, 0, 0, NULL, "Clamp them." },
+};
+static const fsi_key_table region_table = { "region", "A set of particles.", region_keys, 2 };
+
+static const fsi_key_spec probe_keys[] = {
+    { "at", FSI_KEY_VECTOR, "m", NULL, 0, 0, 0, NULL, "Probe position." },
+};
+static const fsi_key_table probe_table = { "probe", "A recorded point.", probe_keys, 1 };
+
+static const fsi_object_kind block_objects[] = {
+    { "block", "Particles filling a box.", &block_table, 1 },
+    { "region", "Particles selected by a box.", &region_table, 0 },
+    { "probe", "A point whose motion is recorded.", &probe_table, 0 },
+};
+
+/* The semantic check of the block solid: every block's max lies above its min.
+ * Written the way a solver's check would be, with fsi_case_origin for WHERE. */
+static int check_calls;
+
+static int check_blocks(const fsi_case *c, const char *role, FILE *errors)
+{
+    check_calls++;
+    const char *blocks[8];
+    int n = fsi_case_objects(c, role, "block", blocks, 8);
+    int bad = 0;
+    for (int i = 0; i < n && i < 8; i++) {
+        double lo[FSI_DIM], hi[FSI_DIM];
+        if (fsi_case_get_vector(c, blocks[i], "min", lo) != 0 ||
+            fsi_case_get_vector(c, blocks[i], "max", hi) != 0) {
+            fprintf(errors, "%s: [%s]: check called with an invalid block\n",
+                    fsi_case_origin(c, blocks[i], NULL), blocks[i]);
+            bad++;
+            continue;
+        }
+        for (int d = 0; d < FSI_DIM; d++) {
+            if (hi[d] <= lo[d]) {
+                fprintf(errors, "%s: [%s] max: block '%s' is empty (max <= min)\n",
+                        fsi_case_origin(c, blocks[i], "max"), blocks[i],
+                        fsi_case_object_name(blocks[i]));
+                bad++;
+                break;
+            }
+        }
+    }
+    return bad;
+}
+
 static const fsi_solver_spec solvers[] = {
-    { "spring_oscillators", "solid", "fsi_spring_solid", "Particles on springs.", &spring_table },
+    { "spring_oscillators", "solid", "fsi_spring_solid", "Particles on springs.", spring_tables,
+      1, NULL, 0, NULL },
     { "linear_dashpot", "fluid", "fsi_dashpot_fluid", "A linear dashpot as fluid.",
-      &dashpot_table },
+      dashpot_tables, 1, NULL, 0, NULL },
+    { "blocks", "solid", "fsi_blocks", "A solid of blocks, regions and probes.", blocks_tables, 3,
+      block_objects, 3, check_blocks },
 };
 
 static const char *const roles[] = { "fluid", "solid" };
 
 static const fsi_case_schema schema = {
-    sections, 2, &participant, roles, 2, solvers, 2,
+    sections, 2, &participant, roles, 2, solvers, 3,
 };
 
 /* ---------------------------------------------------------------- helpers */
@@ -438,7 +537,7 @@ static void test_solvers(void)
     CHECK(n == 2, "solvers: %d errors:\n%s", n, msgs);
     EXPECT_AT(msgs, path, text, "sprng",
               "[solid] solver: unknown solver 'sprng_oscillators' (did you mean "
-              "'spring_oscillators'?); solid solvers: spring_oscillators, external");
+              "'spring_oscillators'?); solid solvers: spring_oscillators, blocks, external");
     EXPECT_AT(msgs, path, text, "solver = spring_oscillators",
               "[fluid] solver: 'spring_oscillators' is a solid solver, not a fluid solver "
               "(fluid solvers: linear_dashpot, external)");
@@ -723,6 +822,426 @@ static void test_markdown(void)
     free(md);
 }
 
+/* ---------------------------------------------------------- object sections */
+
+static const char objects_text[] =
+    "[run]\nend_time = 1\n"
+    "[solid]\nsolver = blocks\ndensity = 1000\n"
+    "[solid.block beam]\nmin = " VEC_ZERO "\nmax = " VEC_MAX "\n"
+    "[solid.region clamp]   ; the left end\nfixed = yes\n"
+    "[solid.block   base_2]\nmin = " VEC_ZERO "\nmax = " VEC_MAX "\nspacing = 0.02\n"
+    "[solid.probe tip-1]\nat = " VEC_MAX "\n"
+    "[fluid]\nsolver = external\nexecutable = /bin/true\n"
+    "[fluid.wall tank]\nanything = goes\n";
+
+static void test_objects(void)
+{
+    char *path = write_case("objects.ini", objects_text);
+    char *msgs;
+    int n;
+    int calls = check_calls;
+    fsi_case *c = load(path, &msgs, &n);
+    CHECK(c && n == 0, "objects case: %d errors:\n%s", n, msgs);
+    CHECK(check_calls == calls + 1, "check hook called %d times", check_calls - calls);
+    if (!c)
+        goto done;
+    const char *blocks[4] = { NULL, NULL, NULL, NULL };
+    CHECK(fsi_case_objects(c, "solid", "block", blocks, 4) == 2, "two blocks");
+    CHECK(blocks[0] && strcmp(blocks[0], "solid.block beam") == 0, "first block %s", blocks[0]);
+    CHECK(blocks[1] && strcmp(blocks[1], "solid.block base_2") == 0,
+          "second block, blanks cut to one: %s", blocks[1]);
+    CHECK(blocks[2] == NULL, "only two names filled");
+    const char *first = NULL;
+    CHECK(fsi_case_objects(c, "solid", "block", &first, 1) == 2, "count beyond max_sections");
+    CHECK(first && strcmp(first, "solid.block beam") == 0, "file order");
+    CHECK(fsi_case_objects(c, "solid", "block", NULL, 0) == 2, "count only");
+    CHECK(fsi_case_objects(c, "solid", "region", NULL, 0) == 1, "one region");
+    CHECK(fsi_case_objects(c, "solid", "blo", NULL, 0) == 0, "kind prefix is not a kind");
+    CHECK(fsi_case_objects(c, "fluid", "wall", NULL, 0) == 1, "external objects are kept");
+    CHECK(fsi_case_objects(c, "fluid", "block", NULL, 0) == 0, "no fluid blocks");
+
+    CHECK(fsi_case_get_real(c, "solid.block beam", "spacing", -1) == 0.01, "default spacing");
+    CHECK(fsi_case_get_real(c, "solid.block base_2", "spacing", -1) == 0.02, "given spacing");
+    double v[FSI_DIM];
+    CHECK(fsi_case_get_vector(c, "solid.block beam", "max", v) == 0 && v[0] == 1.0, "block max");
+    CHECK(fsi_case_get_bool(c, "solid.region clamp", "fixed", 0) == 1, "region fixed");
+    const char *sel = fsi_case_get(c, "solid.region clamp", "select");
+    CHECK(sel && strcmp(sel, "inside") == 0, "region default select");
+    CHECK(fsi_case_get_real(c, "solid", "youngs_modulus", -1) == 1e9, "material table default");
+    CHECK(fsi_case_get_real(c, "solid", "horizon", -1) == 3.0, "own table default");
+    CHECK(fsi_case_get_real(c, "solid", "time_step", -1) == 1e-4, "common table default");
+    const char *any = fsi_case_get(c, "fluid.wall tank", "anything");
+    CHECK(any && strcmp(any, "goes") == 0, "external object key passes through");
+
+    const char *name = fsi_case_object_name("solid.block beam");
+    CHECK(name && strcmp(name, "beam") == 0, "object name %s", name ? name : "(null)");
+    CHECK(fsi_case_object_name("solid") == NULL, "a participant is no object");
+    CHECK(fsi_case_object_name("solid.block") == NULL, "no name");
+    CHECK(fsi_case_object_name("solid beam") == NULL, "no kind");
+    CHECK(fsi_case_object_name(".block beam") == NULL, "no role");
+
+    char *want = format("%s:%d", path, line_of(objects_text, "[solid.block beam]"));
+    const char *o = fsi_case_origin(c, "solid.block beam", NULL);
+    CHECK(o && strcmp(o, want) == 0, "header origin %s, want %s", o ? o : "(null)", want);
+    free(want);
+    want = format("%s:%d", path, line_of(objects_text, "max = " VEC_MAX "\n[solid.region"));
+    o = fsi_case_origin(c, "solid.block beam", "max");
+    CHECK(o && strcmp(o, want) == 0, "key origin %s, want %s", o ? o : "(null)", want);
+    free(want);
+    o = fsi_case_origin(c, "solid.block beam", "spacing");
+    CHECK(o && strcmp(o, "default") == 0, "default origin %s", o ? o : "(null)");
+    o = fsi_case_origin(c, "output", NULL);
+    CHECK(o && strcmp(o, "default") == 0, "absent fixed section origin %s", o ? o : "(null)");
+    CHECK(fsi_case_origin(c, "solid.block beam", "nothing") == NULL, "absent key origin");
+    CHECK(fsi_case_origin(c, "solid.block nothing", NULL) == NULL, "absent section origin");
+done:
+    fsi_case_free(c);
+    free(msgs);
+    free(path);
+}
+
+static void test_object_errors(void)
+{
+    static const char text[] =
+        "[run]\nend_time = 1\n"
+        "[solid]\nsolver = blocks\ndensity = 1000\n"
+        "[solid.block beam]\nmin = " VEC_ZERO "\nmax = " VEC_MAX "\n"
+        "[solid.blok a]\nmin = 1\n"
+        "[solid.block bad.name]\nmin = " VEC_ZERO "\nmax = " VEC_MAX "\n"
+        "[solid.block]\n"
+        "[solid.probe p]\n"
+        "[solid.region q]\nselec = inside\n"
+        "[solid.region r]\nselect = outsid\n"
+        "[fluidd.wall w]\n"
+        "[fluid.wall w]\n"
+        "[solid block]\n";
+    char *path = write_case("object_errors.ini", text);
+    char *msgs;
+    int n;
+    int calls = check_calls;
+    fsi_case *c = load(path, &msgs, &n);
+    CHECK(c != NULL, "object errors case should read:\n%s", msgs);
+    CHECK(n == 9, "object errors: %d errors (want 9):\n%s", n, msgs);
+    EXPECT_AT(msgs, path, text, "[solid.blok a]",
+              "[solid.blok a]: unknown object kind 'blok' for solver blocks (did you mean "
+              "'block'? kinds: block, region, probe)\n");
+    EXPECT_AT(msgs, path, text, "[solid.block bad.name]",
+              "[solid.block bad.name]: object name 'bad.name' must be one word of letters, "
+              "digits, '_' and '-'\n");
+    EXPECT_AT(msgs, path, text, "[solid.block]\n",
+              "[solid.block]: object name missing (object sections are written "
+              "[solid.block NAME])\n");
+    EXPECT_AT(msgs, path, text, "[solid.probe p]", "[solid.probe p] at: required key missing\n");
+    EXPECT_AT(msgs, path, text, "selec =",
+              "[solid.region q] selec: unknown key 'selec' (did you mean 'select'?)\n");
+    EXPECT_AT(msgs, path, text, "select = outsid",
+              "[solid.region r] select: 'outsid' is not one of: inside, outside (did you mean "
+              "'outside'?)\n");
+    EXPECT_AT(msgs, path, text, "[fluidd.wall w]",
+              "[fluidd.wall w]: unknown participant 'fluidd' (did you mean 'fluid'?); object "
+              "sections are written [ROLE.KIND NAME] with ROLE one of: fluid, solid\n");
+    EXPECT_AT(msgs, path, text, "[fluid.wall w]",
+              "[fluid.wall w]: no [fluid] section (the participant this object belongs to)\n");
+    EXPECT_AT(msgs, path, text, "[solid block]",
+              "unknown section [solid block] (did you mean [solid]? known: run, output, fluid, "
+              "solid); object sections are written [ROLE.KIND NAME]\n");
+    CHECK(!strstr(msgs, "[solid.block] min"), "keys of a nameless object are not checked:\n%s",
+          msgs);
+    CHECK(!strstr(msgs, "[solid.blok a] min"), "keys of an unknown kind are not checked:\n%s",
+          msgs);
+    CHECK(check_calls == calls, "check hook must not run after key errors");
+    fsi_case_free(c);
+    free(msgs);
+    free(path);
+
+    /* Too few objects: reported at the participant's header. A solver without
+     * object kinds says so. */
+    static const char text2[] =
+        "[run]\nend_time = 1\n\n[solid]\nsolver = blocks\ndensity = 1\n";
+    path = write_case("too_few.ini", text2);
+    c = load(path, &msgs, &n);
+    CHECK(n == 1, "too few: %d errors:\n%s", n, msgs);
+    EXPECT_AT(msgs, path, text2, "[solid]",
+              "[solid]: solver blocks needs at least 1 [solid.block NAME] section, found 0\n");
+    CHECK(check_calls == calls, "check hook must not run with too few objects");
+    fsi_case_free(c);
+    free(msgs);
+    free(path);
+
+    static const char text3[] =
+        "[run]\nend_time = 1\n[solid]\nsolver = spring_oscillators\nstiffness = 1\n"
+        "[solid.block beam]\nmin = 0\n";
+    path = write_case("no_kinds.ini", text3);
+    c = load(path, &msgs, &n);
+    CHECK(n == 1, "no kinds: %d errors:\n%s", n, msgs);
+    EXPECT_AT(msgs, path, text3, "[solid.block beam]",
+              "[solid.block beam]: unknown object kind 'block' for solver spring_oscillators "
+              "(it takes no object sections)\n");
+    fsi_case_free(c);
+    free(msgs);
+    free(path);
+
+    /* A wrong solver is the one error: its objects cannot be judged. */
+    static const char text4[] =
+        "[run]\nend_time = 1\n[solid]\nsolver = blokcs\n[solid.block beam]\nmin = 0\n";
+    path = write_case("bad_solver_objects.ini", text4);
+    c = load(path, &msgs, &n);
+    CHECK(n == 1, "bad solver with objects: %d errors:\n%s", n, msgs);
+    EXPECT_AT(msgs, path, text4, "solver = blokcs", "[solid] solver: unknown solver 'blokcs'");
+    fsi_case_free(c);
+    free(msgs);
+    free(path);
+}
+
+static void test_duplicate_object(void)
+{
+    static const char text[] =
+        "[solid]\nsolver = blocks\n[solid.block beam]\nmin = 0\n"
+        "[solid.region beam]\n"         /* another kind may reuse the name */
+        "[solid.block  beam]\nmax = 1\n";
+    char *tail = format("section [solid.block beam] given twice (first at %s/dupobj.ini:%d)",
+                        tmp_dir, line_of(text, "[solid.block beam]"));
+    EXPECT_READ_ERROR("dupobj.ini", text, "[solid.block  beam]", tail, 1);
+    free(tail);
+}
+
+static void test_object_override(void)
+{
+    char *path = write_case("object_set.ini", objects_text);
+    FILE *err = tmpfile();
+    fsi_case *c = fsi_case_read(path, err);
+    CHECK(c != NULL, "object --set case");
+    if (!c) {
+        fclose(err);
+        free(path);
+        return;
+    }
+    CHECK(fsi_case_override(c, "solid.block beam.max=" VEC_MAX_SET, err) == 0, "--set object");
+    CHECK(fsi_case_override(c, "solid.block   base_2 .spacing = 0.5", err) == 0,
+          "--set object, blanks in the section");
+    CHECK(fsi_case_override(c, "solid.probe new.at=" VEC_ZERO, err) == 0, "--set new object");
+    CHECK(fsi_case_override(c, "solid.block beam max=1", err) == -1,
+          "no '.' before the key: 'block beam max' would be the key");
+    CHECK(fsi_case_override(c, "solid.block beam.=1", err) == -1, "empty key");
+    int calls = check_calls;
+    int n = fsi_case_validate(c, &schema, err);
+    char *msgs = read_all(err);
+    CHECK(n == 0, "object --set: %d errors:\n%s", n, msgs);
+    CHECK(strstr(msgs, "--set solid.block beam max=1: key 'block beam max' may not contain "
+                       "blanks") != NULL, "--set split message:\n%s", msgs);
+    CHECK(check_calls == calls + 1, "check hook after --set");
+    double v[FSI_DIM];
+    CHECK(fsi_case_get_vector(c, "solid.block beam", "max", v) == 0 && v[0] == 2.0,
+          "--set wins in an object section");
+    CHECK(fsi_case_get_real(c, "solid.block base_2", "spacing", -1) == 0.5,
+          "--set section name with blanks");
+    const char *o = fsi_case_origin(c, "solid.block beam", "max");
+    CHECK(o && strcmp(o, "--set solid.block beam.max=" VEC_MAX_SET) == 0, "--set origin %s",
+          o ? o : "(null)");
+    const char *probes[2] = { NULL, NULL };
+    CHECK(fsi_case_objects(c, "solid", "probe", probes, 2) == 2, "--set adds an object");
+    CHECK(probes[1] && strcmp(probes[1], "solid.probe new") == 0, "added object comes last");
+    o = fsi_case_origin(c, "solid.probe new", NULL);
+    CHECK(o && strcmp(o, "--set solid.probe new.at=" VEC_ZERO) == 0, "new object origin %s",
+          o ? o : "(null)");
+    fsi_case_free(c);
+    free(msgs);
+
+    /* Errors in an object made by --set are reported at the --set. */
+    err = tmpfile();
+    c = fsi_case_read(path, err);
+    CHECK(fsi_case_override(c, "solid.block extra.min=" VEC_ZERO, err) == 0, "--set new block");
+    CHECK(fsi_case_override(c, "solid.blok beam.min=1", err) == 0, "--set unknown kind");
+    n = fsi_case_validate(c, &schema, err);
+    msgs = read_all(err);
+    CHECK(n == 2, "object --set errors: %d:\n%s", n, msgs);
+    CHECK(strstr(msgs, "--set solid.block extra.min=" VEC_ZERO ": [solid.block extra] max: "
+                       "required key missing\n") != NULL, "missing key of a --set object:\n%s",
+          msgs);
+    CHECK(strstr(msgs, "--set solid.blok beam.min=1: [solid.blok beam]: unknown object kind "
+                       "'blok'") != NULL, "unknown kind by --set:\n%s", msgs);
+    fsi_case_free(c);
+    free(msgs);
+    free(path);
+}
+
+/* The check hook runs when the keys are fine, and its errors count. */
+static void test_check_hook(void)
+{
+    static const char text[] =
+        "[run]\nend_time = 1\n"
+        "[solid]\nsolver = blocks\ndensity = 1000\n"
+        "[solid.block ok]\nmin = " VEC_ZERO "\nmax = " VEC_MAX "\n"
+        "[solid.block flat]\nmin = " VEC_ZERO "\nmax = " VEC_SMALL "\n"
+        "[fluid]\nsolver = linear_dashpot\ndamping = -1\n";
+    char *path = write_case("hook.ini", text);
+    char *msgs;
+    int n;
+    int calls = check_calls;
+    fsi_case *c = load(path, &msgs, &n);
+    CHECK(check_calls == calls + 1, "hook runs although [fluid] has an error");
+    CHECK(n == 2, "hook: %d errors (want 2):\n%s", n, msgs);
+    EXPECT_AT(msgs, path, text, "max = " VEC_SMALL,
+              "[solid.block flat] max: block 'flat' is empty (max <= min)\n");
+    EXPECT_AT(msgs, path, text, "damping", "[fluid] damping: -1 must be >= 0\n");
+    fsi_case_free(c);
+    free(msgs);
+
+    /* With a NULL stream the hook still runs and its errors still count. */
+    FILE *err = tmpfile();
+    c = fsi_case_read(path, err);
+    n = c ? fsi_case_validate(c, &schema, NULL) : -1;
+    CHECK(n == 2, "hook without an error stream: %d", n);
+    CHECK(check_calls == calls + 2, "hook runs without an error stream");
+    fclose(err);
+    fsi_case_free(c);
+    free(path);
+}
+
+/* A key defined in two tables of one solver is a flaw of the schema. */
+static const fsi_key_spec dup_keys[] = {
+    { "density", FSI_KEY_REAL, "kg/m^3", "1", FSI_BOUND_MIN_OPEN, 0, 0, NULL, "Again." },
+    { "bad_default", FSI_KEY_INT, "-", "0", FSI_BOUND_MIN, 1, 0, NULL, "Breaks its rule." },
+};
+static const fsi_key_table dup_table = { "dup_own", "Clashes with materials.", dup_keys, 2 };
+static const fsi_key_table *const dup_tables[] = { &material_table, &dup_table };
+static const fsi_object_kind dup_objects[] = {
+    { "block", "First.", &block_table, 0 },
+    { "block", "Second.", &region_table, 0 },
+};
+static const fsi_solver_spec dup_solvers[] = {
+    { "clash", "solid", "fsi_clash", "Bad.", dup_tables, 2, dup_objects, 2, NULL },
+};
+static const fsi_case_schema dup_schema = { sections, 2, &participant, roles, 2, dup_solvers, 1 };
+
+static void test_schema_check(void)
+{
+    FILE *err = tmpfile();
+    CHECK(fsi_case_schema_check(&schema, err) == 0, "test schema is sound");
+    int n = fsi_case_schema_check(&dup_schema, err);
+    char *msgs = read_all(err);
+    CHECK(n == 3, "flawed schema: %d flaws:\n%s", n, msgs);
+    CHECK(strstr(msgs, "internal error in the case schema: solver clash: key 'density' is "
+                       "defined in table 'materials' and again in table 'dup_own'\n") != NULL,
+          "duplicate key message:\n%s", msgs);
+    CHECK(strstr(msgs, "solver clash: default of key 'bad_default' in table 'dup_own': 0 must "
+                       "be >= 1\n") != NULL, "bad default message:\n%s", msgs);
+    CHECK(strstr(msgs, "solver clash, [solid.block NAME]: object kind declared twice\n") != NULL,
+          "duplicate kind message:\n%s", msgs);
+    free(msgs);
+
+    /* validate reports them too, so that a schema bug cannot pass unnoticed. */
+    static const char text[] = "[run]\nend_time = 1\n[solid]\nsolver = clash\ndensity = 1\n";
+    char *path = write_case("clash.ini", text);
+    err = tmpfile();
+    fsi_case *c = fsi_case_read(path, err);
+    n = c ? fsi_case_validate(c, &dup_schema, err) : -1;
+    msgs = read_all(err);
+    CHECK(n == 3, "validate with a flawed schema: %d:\n%s", n, msgs);
+    CHECK(strstr(msgs, "internal error in the case schema: solver clash: key 'density'") != NULL,
+          "validate reports the duplicate key:\n%s", msgs);
+    fsi_case_free(c);
+    free(msgs);
+    free(path);
+
+    /* The project's own schema (launch/solver_registry.c). */
+    err = tmpfile();
+    n = fsi_case_schema_check(fsi_project_schema(), err);
+    msgs = read_all(err);
+    CHECK(n == 0, "the project schema has %d flaws:\n%s", n, msgs);
+    free(msgs);
+}
+
+static const char *const object_roundtrip_keys[][2] = {
+    { "solid", "solver" },          { "solid", "density" },
+    { "solid", "youngs_modulus" },  { "solid.block beam", "min" },
+    { "solid.block beam", "max" },  { "solid.block beam", "spacing" },
+    { "solid.block base_2", "spacing" }, { "solid.region clamp", "fixed" },
+    { "solid.region clamp", "select" },  { "solid.probe tip-1", "at" },
+    { "solid.probe new", "at" },    { "fluid.wall tank", "anything" },
+};
+
+static void test_round_trip_objects(void)
+{
+    char *path = write_case("round_objects.ini", objects_text);
+    FILE *err = tmpfile();
+    fsi_case *c = fsi_case_read(path, err);
+    CHECK(c != NULL, "object round trip case");
+    if (!c) {
+        fclose(err);
+        free(path);
+        return;
+    }
+    CHECK(fsi_case_override(c, "solid.block beam.max=" VEC_MAX_SET, err) == 0, "--set max");
+    CHECK(fsi_case_override(c, "solid.probe new.at=" VEC_ZERO, err) == 0, "--set new probe");
+    int n = fsi_case_validate(c, &schema, err);
+    char *msgs = read_all(err);
+    CHECK(n == 0, "object round trip validate: %s", msgs);
+    free(msgs);
+
+    char *out_path = format("%s/resolved_objects.ini", tmp_dir);
+    FILE *out = fopen(out_path, "w");
+    fsi_case_write_resolved(c, out);
+    fclose(out);
+    out = fopen(out_path, "r");
+    char *resolved = read_all(out);
+    CHECK(strstr(resolved, "\n[solid.block base_2] ") != NULL, "object header written:\n%s",
+          resolved);
+    char *origin = format("; # %s:%d\n", path, line_of(objects_text, "[solid.block   base_2]"));
+    CHECK(strstr(resolved, origin) != NULL, "header origin %s in:\n%s", origin, resolved);
+    free(origin);
+    CHECK(strstr(resolved, "; # --set solid.probe new.at=" VEC_ZERO) != NULL,
+          "origin of a --set object:\n%s", resolved);
+
+    err = tmpfile();
+    fsi_case *back = fsi_case_read(out_path, err);
+    n = back ? fsi_case_validate(back, &schema, err) : -1;
+    msgs = read_all(err);
+    CHECK(back && n == 0, "resolved objects do not validate (%d):\n%s\n--- file:\n%s", n, msgs,
+          resolved);
+    for (size_t i = 0; back && i < sizeof object_roundtrip_keys / sizeof object_roundtrip_keys[0];
+         i++) {
+        const char *sec = object_roundtrip_keys[i][0], *key = object_roundtrip_keys[i][1];
+        const char *a = fsi_case_get(c, sec, key), *b = fsi_case_get(back, sec, key);
+        CHECK(a && b && strcmp(a, b) == 0, "round trip [%s] %s: '%s' vs '%s'", sec, key,
+              a ? a : "(null)", b ? b : "(null)");
+    }
+    const char *want[4], *got[4];
+    int n_want = fsi_case_objects(c, "solid", "probe", want, 4);
+    int n_got = back ? fsi_case_objects(back, "solid", "probe", got, 4) : -1;
+    CHECK(n_want == 2 && n_got == 2 && strcmp(want[1], got[1]) == 0,
+          "objects read back in the same order");
+    fsi_case_free(back);
+    fsi_case_free(c);
+    free(msgs);
+    free(resolved);
+    free(out_path);
+    free(path);
+}
+
+static void test_markdown_objects(void)
+{
+    FILE *f = tmpfile();
+    fsi_case_schema_markdown(&schema, f);
+    char *md = read_all(f);
+    static const char *const wanted[] = {
+        "### solver = blocks (solid)",
+        "#### Keys: solid_common\n\nKeys of every solid.\n\n| key |",
+        "#### Keys: materials\n\nMaterial keys.\n\n| key |",
+        "#### Keys: blocks\n",
+        "#### [solid.block NAME] sections (at least one)\n\nParticles filling a box.\n\n| key |",
+        "#### [solid.region NAME] sections (any number)\n\nParticles selected by a box.\n",
+        "| `select` | choice | - | `inside` | inside, outside |",
+        "| `density` | real | kg/m^3 | required | > 0 |",
+        "`--set \"solid.block beam.max=1,0.2\"`",
+    };
+    for (size_t i = 0; i < sizeof wanted / sizeof wanted[0]; i++)
+        CHECK(strstr(md, wanted[i]) != NULL, "markdown lacks '%s'", wanted[i]);
+    CHECK(strstr(md, "#### [solid.block NAME]") > strstr(md, "#### Keys: blocks"),
+          "object kinds come after the solver's key tables");
+    free(md);
+}
+
 int main(void)
 {
     /* $FSI_TEST_TMP is shared by all unit tests: use a folder of our own in it. */
@@ -743,6 +1262,14 @@ int main(void)
     test_override();
     test_round_trip();
     test_markdown();
+    test_objects();
+    test_object_errors();
+    test_duplicate_object();
+    test_object_override();
+    test_check_hook();
+    test_schema_check();
+    test_round_trip_objects();
+    test_markdown_objects();
 
     if (failures) {
         fprintf(stderr, "test_case_file: %d of %d checks failed\n", failures, checks);

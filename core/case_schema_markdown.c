@@ -1,0 +1,209 @@
+/* docs/cases.md from a case schema (see fsi_case_schema_markdown in case_file.h).
+ * Kept apart from the reader: it only walks the key tables and writes text. */
+#include "case_file.h"
+#include "case_file_internal.h"
+#include "dim.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+
+static const char *type_name(fsi_key_type t)
+{
+    switch (t) {
+    case FSI_KEY_REAL: return "real";
+    case FSI_KEY_INT: return "integer";
+    case FSI_KEY_BOOL: return "bool";
+    case FSI_KEY_STRING: return "string";
+    case FSI_KEY_CHOICE: return "choice";
+    case FSI_KEY_VECTOR: return "vector";
+    }
+    return "?";
+}
+
+/* Writes text for a table cell: '|' would end the cell, line breaks the row. */
+static void md_cell(const char *text, FILE *out)
+{
+    for (const char *p = text ? text : ""; *p; p++) {
+        if (*p == '|')
+            fputs("\\|", out);
+        else if (*p == '\n' || *p == '\r')
+            fputc(' ', out);
+        else
+            fputc(*p, out);
+    }
+}
+
+static void md_bounds(const fsi_key_spec *k, FILE *out)
+{
+    char lo[40], hi[40];
+    fsi_case_format_number(k->min, lo, sizeof lo);
+    fsi_case_format_number(k->max, hi, sizeof hi);
+    int open = k->bounds & FSI_BOUND_MIN_OPEN;
+    int has_min = open || (k->bounds & FSI_BOUND_MIN);
+    int has_max = k->bounds & FSI_BOUND_MAX;
+    if (has_min && has_max)
+        fprintf(out, open ? "> %s and <= %s" : "%s .. %s", lo, hi);
+    else if (has_min)
+        fprintf(out, "%s %s", open ? ">" : ">=", lo);
+    else if (has_max)
+        fprintf(out, "<= %s", hi);
+}
+
+static void md_allowed(const fsi_key_spec *k, FILE *out)
+{
+    switch (k->type) {
+    case FSI_KEY_REAL:
+    case FSI_KEY_INT:
+        md_bounds(k, out);
+        break;
+    case FSI_KEY_BOOL:
+        fputs("true, false", out);
+        break;
+    case FSI_KEY_CHOICE: {
+        char *words = fsi_case_choices_text(k->choices);
+        md_cell(words, out);
+        free(words);
+        break;
+    }
+    case FSI_KEY_VECTOR:
+        fprintf(out, "%d numbers", FSI_DIM);
+        break;
+    case FSI_KEY_STRING:
+        break;
+    }
+}
+
+static void md_default(const fsi_key_spec *k, FILE *out)
+{
+    if (!k->default_value) {
+        fputs("required", out);
+    } else if (!*k->default_value) {
+        fputs("(empty)", out);
+    } else {
+        fputc('`', out);
+        md_cell(k->default_value, out);
+        fputc('`', out);
+    }
+}
+
+static void md_table(const fsi_key_table *t, FILE *out)
+{
+    fputs("| key | type | unit | default | allowed | meaning |\n"
+          "|---|---|---|---|---|---|\n", out);
+    for (int i = 0; i < t->n_keys; i++) {
+        const fsi_key_spec *k = &t->keys[i];
+        fputs("| `", out);
+        md_cell(k->key, out);
+        fprintf(out, "` | %s | ", type_name(k->type));
+        md_cell(k->unit, out);
+        fputs(" | ", out);
+        md_default(k, out);
+        fputs(" | ", out);
+        md_allowed(k, out);
+        fputs(" | ", out);
+        md_cell(k->description, out);
+        fputs(" |\n", out);
+    }
+}
+
+static void md_paragraph(const char *text, FILE *out)
+{
+    if (text && *text)
+        fprintf(out, "%s\n\n", text);
+}
+
+static void md_roles_heading(const fsi_case_schema *schema, FILE *out)
+{
+    fputs("\n## Participant sections", out);
+    for (int i = 0; i < schema->n_roles; i++) {
+        const char *sep = i == 0 ? " " : i == schema->n_roles - 1 ? " and " : ", ";
+        fprintf(out, "%s[%s]", sep, schema->roles[i]);
+    }
+    fputs("\n\n", out);
+}
+
+/* A solver's own keys, one table per key table (common solid keys, material
+ * keys, the model's keys, ...), each under the table's name. */
+static void md_solver_keys(const fsi_solver_spec *sv, FILE *out)
+{
+    int printed = 0;
+    for (int i = 0; i < sv->n_key_tables; i++) {
+        const fsi_key_table *t = sv->key_tables[i];
+        if (!t || t->n_keys == 0)
+            continue;
+        fprintf(out, "%s#### Keys: %s\n\n", printed ? "\n" : "", t->name);
+        md_paragraph(t->description, out);
+        md_table(t, out);
+        printed = 1;
+    }
+    if (!printed)
+        fputs("No keys of its own.\n", out);
+}
+
+static void md_object_kind(const fsi_solver_spec *sv, const fsi_object_kind *k, FILE *out)
+{
+    fprintf(out, "\n#### [%s.%s NAME] sections (", sv->role, k->kind);
+    if (k->min_count <= 0)
+        fputs("any number", out);
+    else if (k->min_count == 1)
+        fputs("at least one", out);
+    else
+        fprintf(out, "at least %d", k->min_count);
+    fputs(")\n\n", out);
+    md_paragraph(k->description, out);
+    if (k->keys && k->keys->n_keys > 0)
+        md_table(k->keys, out);
+    else
+        fputs("No keys.\n", out);
+}
+
+static void md_solver(const fsi_solver_spec *sv, FILE *out)
+{
+    fprintf(out, "\n### solver = %s (%s)\n\n", sv->name, sv->role);
+    md_paragraph(sv->description, out);
+    if (sv->executable)
+        fprintf(out, "Program: `%s`.\n\n", sv->executable);
+    md_solver_keys(sv, out);
+    for (int i = 0; i < sv->n_objects; i++)
+        md_object_kind(sv, &sv->objects[i], out);
+}
+
+void fsi_case_schema_markdown(const fsi_case_schema *schema, FILE *out)
+{
+    fputs("# Case files\n\n"
+          "A case file is an INI file: `[section]` lines, `key = value` lines and comments "
+          "(lines starting with `#` or `;`, or `;` after a blank at the end of a line). "
+          "Section names and keys are case-sensitive. Any key can be overridden on the "
+          "command line with `--set section.key=value`: the key is the text after the last "
+          "`.` before the `=` and the section everything before that `.`, so "
+          "`--set \"solid.block beam.max=1,0.2\"` sets `max` in `[solid.block beam]`. This "
+          "reference is generated from the key tables in the code.\n", out);
+    for (int i = 0; i < schema->n_sections; i++) {
+        const fsi_key_table *t = &schema->sections[i];
+        fprintf(out, "\n## [%s]\n\n", t->name);
+        md_paragraph(t->description, out);
+        md_table(t, out);
+    }
+    if (schema->n_roles == 0)
+        return;
+    md_roles_heading(schema, out);
+    fputs("A participant section runs one solver, chosen with `solver = NAME`; it may hold "
+          "the keys below and the keys of the chosen solver. `solver = external` runs the "
+          "program named by `executable` and passes every other key to it unchecked.\n\n"
+          "Some solvers also take object sections: repeated, named sections "
+          "`[ROLE.KIND NAME]` that belong to the participant section ROLE, e.g. "
+          "`[solid.block beam]`. NAME is one word of letters, digits, `_` and `-`, and two "
+          "objects of the same kind may not share it. The kinds a solver takes, their keys "
+          "and how many of each it needs are listed with the solver. Object sections of an "
+          "external participant are passed to it unchecked.\n\n", out);
+    if (schema->participant) {
+        md_paragraph(schema->participant->description, out);
+        md_table(schema->participant, out);
+    }
+    for (int i = 0; i < schema->n_solvers; i++)
+        md_solver(&schema->solvers[i], out);
+    fputs("\n### solver = external (any participant)\n\n"
+          "Runs the program given by `executable` (required, non-empty) as the participant; "
+          "all other keys of the section and its object sections are passed to it as they "
+          "are.\n", out);
+}
