@@ -1,6 +1,8 @@
 /* The [run] section: time, windows, output cadence and liveness (docs/cases.md). */
 #include "run_keys.h"
 
+#include <string.h>
+
 static const fsi_key_spec run_keys[] = {
     {"title", FSI_KEY_STRING, "-", "untitled", 0, 0, 0, NULL,
      "Name of the scene, printed in the run log."},
@@ -22,7 +24,7 @@ static const fsi_key_spec run_keys[] = {
     {"watchdog_timeout", FSI_KEY_REAL, "s", "3", FSI_BOUND_MIN_OPEN | FSI_BOUND_MAX, 0, 60.0,
      NULL,
      "A process not heard from for this long (wall time) is taken as dead or hung and the "
-     "run stops, naming it."},
+     "run stops, naming it. At least twice heartbeat_interval."},
     {"window_timeout", FSI_KEY_REAL, "s", "600", FSI_BOUND_MIN, 0, 0, NULL,
      "Longest wall time one coupling window may take while everyone is alive (a deadlock "
      "between participants keeps their heartbeats going); the run stops naming who has not "
@@ -36,3 +38,30 @@ static const fsi_key_spec run_keys[] = {
 const fsi_key_table fsi_run_key_table = {
     "run", "Time, coupling windows, output cadence and liveness of the whole run.", run_keys,
     (int)(sizeof run_keys / sizeof run_keys[0])};
+
+int fsi_run_keys_check(const fsi_case *c, FILE *errors)
+{
+    int n = 0;
+    double heartbeat = fsi_case_get_real(c, "run", "heartbeat_interval", 0.25);
+    double watchdog = fsi_case_get_real(c, "run", "watchdog_timeout", 3.0);
+    /* Two missed heartbeats must not yet count as death: a loaded machine delays one. */
+    if (watchdog < 2.0 * heartbeat) {
+        const char *at = fsi_case_origin(c, "run", "watchdog_timeout");
+        fprintf(errors,
+                "%s: [run] watchdog_timeout: %g s is less than twice heartbeat_interval "
+                "(%g s): live processes would be declared dead\n",
+                at && strcmp(at, "default") != 0 ? at : fsi_case_path(c), watchdog, heartbeat);
+        n++;
+    }
+    double output = fsi_case_get_real(c, "run", "output_interval", 0.01);
+    double end = fsi_case_get_real(c, "run", "end_time", 0.0);
+    if (output > 0 && end / output > 1e6) {
+        const char *at = fsi_case_origin(c, "run", "output_interval");
+        fprintf(errors, "%s: [run] output_interval: %g s gives %.3g frames up to end_time "
+                        "%g s (more than a million)\n",
+                at && strcmp(at, "default") != 0 ? at : fsi_case_path(c), output, end / output,
+                end);
+        n++;
+    }
+    return n;
+}

@@ -23,6 +23,7 @@
 #include "case_file.h"
 #include "log.h"
 #include "private_network.h"
+#include "run_keys.h"
 #include "protocol.h"
 #include "solver_registry.h"
 #include "supervisor.h"
@@ -387,6 +388,8 @@ int main(int argc, char **argv)
     for (int i = 0; i < o.n_sets; i++)
         errors += fsi_case_override(c, o.sets[i], stderr) != 0;
     errors += fsi_case_validate(c, fsi_project_schema(), stderr);
+    if (errors == 0)
+        errors += fsi_run_keys_check(c, stderr);
     participant_plan plan[8];
     int n_plan = 0;
     if (errors == 0 && plan_participants(c, &o, plan, &n_plan) != 0)

@@ -75,6 +75,12 @@ cp good.ini bad.ini
 expect_bad set_object "^--set solid.block beam.max=1: \[solid.block beam\]: unknown object kind" \
   --set "solid.block beam.max=1"
 
+# Keys valid one by one but not together.
+cp good.ini bad.ini
+expect_bad watchdog_vs_heartbeat \
+  "^--set run.watchdog_timeout=0.3: \[run\] watchdog_timeout: 0.3 s is less than twice heartbeat_interval" \
+  --set run.watchdog_timeout=0.3
+
 # Several errors are all reported at once.
 sed 's/^particles = 50/particls = 50/; s/^damping = 2.0/damping = -1/' good.ini >bad.ini
 expect_bad two_errors "has 2 errors"
