@@ -478,7 +478,23 @@ typedef struct {
     int pending;        /* the current line went to inih, which has not accepted it yet */
     section *current;   /* NULL before the first section */
     int skip_keys;      /* after a rejected [section] line: its keys belong nowhere */
+    int resolved;       /* the file is one fsi_case_write_resolved wrote */
+    int line_is_default;    /* resolved file: the current key line ends in "; # default" */
 } read_state;
+
+/* The first line of every file fsi_case_write_resolved writes. */
+static const char resolved_marker[] = "# Resolved case read from ";
+static const char default_label[] = "; # default";
+
+/* In a resolved file a defaulted key keeps its origin, so that a participant
+ * reading it can still tell a key the user gave from one it may ignore. */
+static int ends_with_default_label(const char *text)
+{
+    size_t n = strlen(text), m = strlen(default_label);
+    while (n > 0 && isspace((unsigned char)text[n - 1]))
+        n--;
+    return n >= m && strncmp(text + n - m, default_label, m) == 0;
+}
 
 static void line_error(read_state *st, int line, const char *fmt, ...)
     __attribute__((format(printf, 3, 4)));
@@ -578,6 +594,8 @@ static char *case_reader(char *str, int num, void *stream)
         text[--len] = '\0';
     if (st->lineno == 1 && strncmp(text, "\xEF\xBB\xBF", 3) == 0)
         text += 3;
+    if (st->lineno == 1)
+        st->resolved = strncmp(text, resolved_marker, strlen(resolved_marker)) == 0;
     text = (char *)skip_blanks(text);
     str[0] = '\0';
     if (*text == '\0' || *text == ';' || *text == '#')
@@ -596,6 +614,7 @@ static char *case_reader(char *str, int num, void *stream)
     }
     memcpy(str, text, strlen(text) + 1);
     st->pending = 1;
+    st->line_is_default = st->resolved && ends_with_default_label(text);
     return str;
 }
 
@@ -605,6 +624,8 @@ static int on_key(void *user, const char *inih_section, const char *name, const 
     (void)inih_section;     /* cut at 50 bytes by inih; the reader tracks sections */
     st->pending = 0;
     origin here = { FROM_FILE, st->lineno, NULL };
+    if (st->line_is_default)
+        here.kind = FROM_DEFAULT;
     if (!value) {           /* only if a program turned on ini_allow_no_value */
         line_error(st, st->lineno, "%s", syntax_message);
         return 1;
@@ -1795,8 +1816,8 @@ static void write_header(const section *s, FILE *out)
 
 void fsi_case_write_resolved(const fsi_case *c, FILE *out)
 {
-    fprintf(out, "# Resolved case read from %s: every section and key with its value and,\n"
-                 "# in a comment, where it came from.\n", c->path);
+    fprintf(out, "%s%s: every section and key with its value and,\n"
+                 "# in a comment, where it came from.\n", resolved_marker, c->path);
     for (int i = 0; i < c->n_sections; i++) {
         const section *s = c->sections[i];
         write_header(s, out);

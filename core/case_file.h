@@ -162,7 +162,8 @@ const char *fsi_case_origin(const fsi_case *c, const char *section, const char *
 /* Writes the resolved case as an INI file: every section (object sections
  * included), every key including defaults, each section header and key line
  * commented with its origin ("# default", "# FILE:LINE", "# --set ..."). Reading
- * it back gives the same sections and values. */
+ * it back gives the same sections and values, and keys that were defaults have
+ * origin "default" again (so a solver can still tell what the user gave). */
 void fsi_case_write_resolved(const fsi_case *c, FILE *out);
 
 /* The file the case was read from. */

@@ -3,7 +3,10 @@
 #include <string.h>
 
 #include "example_keys.h"
+#include "material.h"
+#include "nosbpd_keys.h"
 #include "run_keys.h"
+#include "solid_keys.h"
 
 static const fsi_key_spec participant_keys[] = {
     {"solver", FSI_KEY_STRING, "-", NULL, 0, 0, 0, NULL,
@@ -24,7 +27,17 @@ static const char *const roles[] = {"fluid", "solid"};
 static const fsi_key_table *const spring_tables[] = {&fsi_spring_solid_keys};
 static const fsi_key_table *const dashpot_tables[] = {&fsi_dashpot_fluid_keys};
 
+static const fsi_key_table *const nosbpd_tables[] = {&fsi_solid_common_keys,
+                                                     &material_key_table, &fsi_nosbpd_keys};
+
 #define N_TABLES(a) ((int)(sizeof(a) / sizeof((a)[0])))
+
+/* Every solid model's semantic check: the geometry, then the material's cross-key
+ * rules (both write one line per problem). */
+static int solid_model_check(const fsi_case *c, const char *role, FILE *errors)
+{
+    return solid_geometry_check(c, role, errors) + material_case_check(c, role, errors);
+}
 
 static const fsi_solver_spec solvers[] = {
     {"spring_oscillators", "solid", "fsi-spring-solid",
@@ -33,6 +46,12 @@ static const fsi_solver_spec solvers[] = {
     {"linear_dashpot", "fluid", "fsi-dashpot-fluid",
      "Example fluid: a linear dashpot on every solid particle (examples/dashpot_fluid.c).",
      dashpot_tables, N_TABLES(dashpot_tables), NULL, 0, NULL},
+    {"nosbpd", "solid", "fsi-solid-nosbpd",
+     "Non-ordinary state-based peridynamics (correspondence model, seed 000 section 2.2) "
+     "with zero-energy control, bond failure and Drucker-Prager plasticity "
+     "(solid_solver/nosbpd, docs/nosbpd.md).",
+     nosbpd_tables, N_TABLES(nosbpd_tables), fsi_solid_object_kinds, FSI_SOLID_N_OBJECT_KINDS,
+     solid_model_check},
 };
 
 static const fsi_case_schema schema = {

@@ -32,19 +32,7 @@
 #include <stdio.h>
 #include <string.h>
 
-static int failures;
-static int checks;
-
-#define CHECK(cond, ...)                                                    \
-    do {                                                                    \
-        checks++;                                                           \
-        if (!(cond)) {                                                      \
-            failures++;                                                     \
-            fprintf(stderr, "FAIL %s:%d: ", __FILE__, __LINE__);            \
-            fprintf(stderr, __VA_ARGS__);                                   \
-            fputc('\n', stderr);                                            \
-        }                                                                   \
-    } while (0)
+#include "unit_check.h"
 
 #define TOL_F 1e-10         /* |f| / k on the surface */
 #define TOL_COS 1e-12       /* 1 - cos(deps_p, dg/dsigma) */

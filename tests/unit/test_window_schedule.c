@@ -5,17 +5,7 @@
 
 #include "window_schedule.h"
 
-static int failures;
-
-#define CHECK(cond, ...)                                                              \
-    do {                                                                              \
-        if (!(cond)) {                                                                \
-            failures++;                                                               \
-            printf("FAIL %s:%d: ", __FILE__, __LINE__);                               \
-            printf(__VA_ARGS__);                                                      \
-            printf("\n");                                                             \
-        }                                                                             \
-    } while (0)
+#include "unit_check.h"
 
 /* Runs a whole schedule and checks its invariants; returns the window count. */
 static long run_schedule(double t_end, double out, double probe, double max_window,

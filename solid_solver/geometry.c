@@ -1,0 +1,293 @@
+/* Lattice from blocks, region selection, particles (geometry.h). */
+#include "geometry.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+static int read_vector(const fsi_case *c, const char *section, const char *key, double *out)
+{
+    if (fsi_case_get_vector(c, section, key, out) == 0)
+        return 0;
+    for (int d = 0; d < FSI_DIM; d++)
+        out[d] = 0.0;
+    return -1;
+}
+
+static solid_region_action action_of(const char *word)
+{
+    if (word && strcmp(word, "load") == 0)
+        return SOLID_REGION_LOAD;
+    if (word && strcmp(word, "remove") == 0)
+        return SOLID_REGION_REMOVE;
+    return SOLID_REGION_CLAMP;
+}
+
+/* Object sections of one kind in file order; *out is NULL when there are none. */
+static int object_sections(const fsi_case *c, const char *role, const char *kind,
+                           const char ***out)
+{
+    *out = NULL;
+    int n = fsi_case_objects(c, role, kind, NULL, 0);
+    if (n <= 0)
+        return 0;
+    *out = malloc((size_t)n * sizeof **out);
+    if (!*out)
+        return -1;
+    return fsi_case_objects(c, role, kind, *out, n);
+}
+
+int solid_geometry_read(solid_geometry *g, const fsi_case *c, const char *role, char *msg,
+                        size_t msg_size)
+{
+    memset(g, 0, sizeof *g);
+    g->spacing = fsi_case_get_real(c, role, "spacing", 0.0);
+    const char **blocks = NULL, **regions = NULL, **probes = NULL;
+    int nb = object_sections(c, role, "block", &blocks);
+    int nr = object_sections(c, role, "region", &regions);
+    int np = object_sections(c, role, "probe", &probes);
+    if (nb < 0 || nr < 0 || np < 0)
+        goto out_of_memory;
+    g->blocks = nb ? calloc((size_t)nb, sizeof *g->blocks) : NULL;
+    g->regions = nr ? calloc((size_t)nr, sizeof *g->regions) : NULL;
+    g->probes = np ? calloc((size_t)np, sizeof *g->probes) : NULL;
+    if ((nb && !g->blocks) || (nr && !g->regions) || (np && !g->probes))
+        goto out_of_memory;
+
+    g->n_blocks = nb;
+    for (int i = 0; i < nb; i++) {
+        solid_block *b = &g->blocks[i];
+        b->section = blocks[i];
+        read_vector(c, b->section, "min", b->min);
+        read_vector(c, b->section, "max", b->max);
+        for (int d = 0; d < FSI_DIM; d++) {
+            /* The check rejects sizes that are not whole numbers of spacings; here
+             * the nearest whole number keeps an unchecked case from misbehaving. */
+            double n = g->spacing > 0 ? solid_block_spacings(b, g->spacing, d) : 0.0;
+            /* Capped so that products of counts stay far from overflow; such a block
+             * is refused anyway (solid_geometry_lattice_size). */
+            b->count[d] = n > 0.5 ? lround(fmin(n, 1e9)) : 0;
+        }
+    }
+    g->n_regions = nr;
+    for (int i = 0; i < nr; i++) {
+        solid_region *r = &g->regions[i];
+        r->section = regions[i];
+        r->action = action_of(fsi_case_get(c, r->section, "action"));
+        read_vector(c, r->section, "min", r->min);
+        read_vector(c, r->section, "max", r->max);
+        read_vector(c, r->section, "force", r->force);
+        r->ramp_time = fsi_case_get_real(c, r->section, "ramp_time", 0.0);
+    }
+    g->n_probes = np;
+    for (int i = 0; i < np; i++) {
+        g->probes[i].section = probes[i];
+        read_vector(c, probes[i], "point", g->probes[i].point);
+    }
+    free(blocks);
+    free(regions);
+    free(probes);
+    return 0;
+
+out_of_memory:
+    free(blocks);
+    free(regions);
+    free(probes);
+    solid_geometry_free(g);
+    snprintf(msg, msg_size, "out of memory reading the solid's geometry");
+    return -1;
+}
+
+void solid_geometry_free(solid_geometry *g)
+{
+    free(g->blocks);
+    free(g->regions);
+    free(g->probes);
+    memset(g, 0, sizeof *g);
+}
+
+double solid_block_spacings(const solid_block *b, double spacing, int axis)
+{
+    return (b->max[axis] - b->min[axis]) / spacing;
+}
+
+long solid_block_points(const solid_block *b)
+{
+    long n = 1;
+    for (int d = 0; d < FSI_DIM; d++)
+        n *= b->count[d];
+    return n;
+}
+
+void solid_block_point(const solid_block *b, double spacing, long j, double *x)
+{
+    for (int d = 0; d < FSI_DIM; d++) {
+        long i = j % b->count[d];
+        j /= b->count[d];
+        x[d] = b->min[d] + ((double)i + 0.5) * spacing;
+    }
+}
+
+int solid_region_contains(const solid_region *r, double spacing, const double *x)
+{
+    double tol = SOLID_GEOMETRY_TOL * spacing;
+    for (int d = 0; d < FSI_DIM; d++)
+        if (x[d] < r->min[d] - tol || x[d] > r->max[d] + tol)
+            return 0;
+    return 1;
+}
+
+int solid_geometry_removed(const solid_geometry *g, const double *x)
+{
+    for (int r = 0; r < g->n_regions; r++)
+        if (g->regions[r].action == SOLID_REGION_REMOVE &&
+            solid_region_contains(&g->regions[r], g->spacing, x))
+            return 1;
+    return 0;
+}
+
+double solid_blocks_overlap(const solid_block *a, const solid_block *b)
+{
+    double width = INFINITY;
+    for (int d = 0; d < FSI_DIM; d++) {
+        double lo = fmax(a->min[d], b->min[d]), hi = fmin(a->max[d], b->max[d]);
+        width = fmin(width, hi - lo);
+    }
+    return width;
+}
+
+void solid_particles_free(solid_particles *p)
+{
+    free(p->id);
+    free(p->x0);
+    free(p->x);
+    free(p->v);
+    free(p->a);
+    free(p->volume);
+    free(p->density);
+    free(p->flags);
+    free(p->block);
+    memset(p, 0, sizeof *p);
+}
+
+static int particles_alloc(solid_particles *p, long n)
+{
+    size_t un = (size_t)n, uv = un * FSI_DIM;
+    p->id = malloc(un * sizeof *p->id);
+    p->x0 = malloc(uv * sizeof *p->x0);
+    p->x = malloc(uv * sizeof *p->x);
+    p->v = calloc(uv, sizeof *p->v);
+    p->a = calloc(uv, sizeof *p->a);
+    p->volume = malloc(un * sizeof *p->volume);
+    p->density = malloc(un * sizeof *p->density);
+    p->flags = calloc(un, sizeof *p->flags);
+    p->block = malloc(un * sizeof *p->block);
+    if (!p->id || !p->x0 || !p->x || !p->v || !p->a || !p->volume || !p->density ||
+        !p->flags || !p->block) {
+        solid_particles_free(p);
+        return -1;
+    }
+    return 0;
+}
+
+double solid_geometry_lattice_size(const solid_geometry *g)
+{
+    double n = 0.0;
+    for (int b = 0; b < g->n_blocks; b++) {
+        double nb = 1.0;
+        for (int d = 0; d < FSI_DIM; d++)
+            nb *= (double)g->blocks[b].count[d];
+        n += nb;
+    }
+    return n;
+}
+
+int solid_geometry_build(const solid_geometry *g, double density, solid_particles *p,
+                         char *msg, size_t msg_size)
+{
+    memset(p, 0, sizeof *p);
+    double x[FSI_DIM];
+    if (solid_geometry_lattice_size(g) > SOLID_MAX_LATTICE) {
+        snprintf(msg, msg_size, "the blocks hold %.3g lattice points, more than %.3g",
+                 solid_geometry_lattice_size(g), (double)SOLID_MAX_LATTICE);
+        return -1;
+    }
+    /* Two passes: count the points that survive removal, then fill. */
+    long n = 0;
+    for (int b = 0; b < g->n_blocks; b++) {
+        long nb = solid_block_points(&g->blocks[b]);
+        for (long j = 0; j < nb; j++) {
+            solid_block_point(&g->blocks[b], g->spacing, j, x);
+            n += !solid_geometry_removed(g, x);
+        }
+    }
+    if (n == 0) {
+        snprintf(msg, msg_size, "the solid has no particles (every block is empty or removed)");
+        return -1;
+    }
+    if (particles_alloc(p, n) != 0) {
+        snprintf(msg, msg_size, "out of memory for %ld solid particles", n);
+        return -1;
+    }
+    p->n = (int)n;
+    p->spacing = g->spacing;
+    double volume = pow(g->spacing, FSI_DIM);
+    int i = 0;
+    for (int b = 0; b < g->n_blocks; b++) {
+        long nb = solid_block_points(&g->blocks[b]);
+        for (long j = 0; j < nb; j++) {
+            solid_block_point(&g->blocks[b], g->spacing, j, x);
+            if (solid_geometry_removed(g, x))
+                continue;
+            p->id[i] = i;
+            for (int d = 0; d < FSI_DIM; d++)
+                p->x0[i * FSI_DIM + d] = p->x[i * FSI_DIM + d] = x[d];
+            p->volume[i] = volume;
+            p->density[i] = density;
+            p->block[i] = b;
+            for (int r = 0; r < g->n_regions; r++) {
+                const solid_region *reg = &g->regions[r];
+                if (reg->action == SOLID_REGION_REMOVE ||
+                    !solid_region_contains(reg, g->spacing, x))
+                    continue;
+                p->flags[i] |= reg->action == SOLID_REGION_CLAMP ? SOLID_CLAMPED : SOLID_LOADED;
+            }
+            i++;
+        }
+    }
+    return 0;
+}
+
+int solid_region_select(const solid_geometry *g, int r, const solid_particles *p,
+                        int32_t *index)
+{
+    int n = 0;
+    for (int i = 0; i < p->n; i++)
+        if (solid_region_contains(&g->regions[r], g->spacing, &p->x0[i * FSI_DIM])) {
+            if (index)
+                index[n] = i;
+            n++;
+        }
+    return n;
+}
+
+int solid_nearest_particle(const solid_particles *p, const double *point, double *distance)
+{
+    int best = -1;
+    double best_d2 = INFINITY;
+    for (int i = 0; i < p->n; i++) {
+        double d2 = 0.0;
+        for (int d = 0; d < FSI_DIM; d++) {
+            double e = p->x0[i * FSI_DIM + d] - point[d];
+            d2 += e * e;
+        }
+        if (d2 < best_d2) {
+            best_d2 = d2;
+            best = i;
+        }
+    }
+    if (distance)
+        *distance = best >= 0 ? sqrt(best_d2) : INFINITY;
+    return best;
+}

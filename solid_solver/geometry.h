@@ -1,0 +1,109 @@
+/* The solid's geometry from the case: blocks filled with a regular lattice, regions
+ * that clamp, load or remove points, probe points; and the particles built from
+ * them (solid_particles.h).
+ *
+ * Lattice: a block [min, max] holds the points min + (i + 1/2) dx, i = 0 .. n_d - 1
+ * along each axis d, with n_d = (max_d - min_d) / dx (a whole number, checked by
+ * solid_geometry_check), so a block of size L holds L / dx points and its points
+ * carry exactly its volume (each dx^FSI_DIM). Touching blocks continue each other's
+ * lattice when their corners lie on a common grid.
+ *
+ * Regions: a point belongs to a region when it lies in the closed box
+ * [min - tol, max + tol], tol = 1e-6 dx (so a box drawn on the lattice's faces
+ * selects the points inside it, immune to round-off). Points in a 'remove' region are
+ * never created; 'clamp' and 'load' regions then select among the points that exist.
+ *
+ * Ownership: a solid_geometry points into the case (section names) and owns its
+ * arrays (solid_geometry_free); solid_particles arrays are owned by whoever built
+ * them (solid_particles_free). */
+#ifndef FSI_SOLID_GEOMETRY_H
+#define FSI_SOLID_GEOMETRY_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "case_file.h"
+#include "dim.h"
+#include "solid_particles.h"
+
+/* Relative tolerance (in spacings) of region boxes and of "a whole number of
+ * spacings". */
+#define SOLID_GEOMETRY_TOL 1e-6
+
+typedef enum { SOLID_REGION_CLAMP, SOLID_REGION_LOAD, SOLID_REGION_REMOVE } solid_region_action;
+
+typedef struct {
+    const char *section;        /* "solid.block NAME" (owned by the case) */
+    double min[FSI_DIM], max[FSI_DIM];
+    long count[FSI_DIM];        /* lattice points along each axis, >= 0 */
+} solid_block;
+
+typedef struct {
+    const char *section;        /* "solid.region NAME" */
+    solid_region_action action;
+    double min[FSI_DIM], max[FSI_DIM];
+    double force[FSI_DIM];      /* load: total force [N, per unit thickness in 2D] */
+    double ramp_time;           /* load: linear ramp from 0 over this time [s] */
+} solid_region;
+
+typedef struct {
+    const char *section;        /* "solid.probe NAME" */
+    double point[FSI_DIM];
+} solid_probe_point;
+
+typedef struct {
+    double spacing;
+    int n_blocks, n_regions, n_probes;
+    solid_block *blocks;
+    solid_region *regions;
+    solid_probe_point *probes;
+} solid_geometry;
+
+/* Reads [role] spacing and the role's block, region and probe sections of a
+ * validated case (values missing in an unvalidated case read as 0). Returns 0, or
+ * -1 with a message when memory runs out. */
+int solid_geometry_read(solid_geometry *g, const fsi_case *c, const char *role, char *msg,
+                        size_t msg_size);
+void solid_geometry_free(solid_geometry *g);
+
+/* (max - min) / spacing along 'axis': the block's length in spacings, not rounded. */
+double solid_block_spacings(const solid_block *b, double spacing, int axis);
+/* Number of lattice points of the block (product of its counts). */
+long solid_block_points(const solid_block *b);
+/* Position of lattice point j (axis 0 varies fastest) of block b. */
+void solid_block_point(const solid_block *b, double spacing, long j, double *x);
+
+/* True when x lies in the region's closed box, within SOLID_GEOMETRY_TOL spacings. */
+int solid_region_contains(const solid_region *r, double spacing, const double *x);
+/* True when a 'remove' region of g contains x. */
+int solid_geometry_removed(const solid_geometry *g, const double *x);
+
+/* Width of the overlap of two blocks' boxes along each axis, minimum over axes:
+ * > 0 when they share a volume, <= 0 when they are apart or only touch. */
+double solid_blocks_overlap(const solid_block *a, const solid_block *b);
+
+/* Most lattice points the blocks may hold (before removal): particle ids are int32. */
+#define SOLID_MAX_LATTICE 2147483647.0
+
+/* Lattice points of all blocks before removal, as a double (no overflow). */
+double solid_geometry_lattice_size(const solid_geometry *g);
+
+/* Creates the particles: every lattice point of every block outside the remove
+ * regions, id = index, x = x0, v = a = 0, volume dx^FSI_DIM, the given reference
+ * density, block index, and flags SOLID_CLAMPED / SOLID_LOADED from the clamp and
+ * load regions. Returns 0, or -1 with a message (no points, more than SOLID_MAX_LATTICE,
+ * out of memory). */
+int solid_geometry_build(const solid_geometry *g, double density, solid_particles *p,
+                         char *msg, size_t msg_size);
+void solid_particles_free(solid_particles *p);
+
+/* Indices of the particles in region r (in index order) into 'index' when it is
+ * not NULL; returns how many. */
+int solid_region_select(const solid_geometry *g, int r, const solid_particles *p,
+                        int32_t *index);
+
+/* Index of the particle whose reference position x0 is nearest to 'point' (the
+ * lowest index among equals), its distance in *distance; -1 when p is empty. */
+int solid_nearest_particle(const solid_particles *p, const double *point, double *distance);
+
+#endif

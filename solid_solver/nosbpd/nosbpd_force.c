@@ -1,0 +1,253 @@
+/* Internal force of the NOSB-PD correspondence model (000 §2.2), two gather passes
+ * over the CSR bonds, each parallel over points with no shared writes (so the
+ * result does not depend on the number of threads, bit for bit):
+ *
+ * Pass 1, per point I:
+ *   - bond failure (Eq. 47): an intact bond with stretch
+ *     s = (|y| - |xi|) / |xi| > s0 breaks for ever (tested without a square root as
+ *     |y|^2 > (1 + s0)^2 |xi|^2). Both halves of a pair compute the same numbers,
+ *     so they break together;
+ *   - N_{n+1} = sum_J omega V_J y_{n+1} (x) xi and N_n the same at x_prev, over the
+ *     intact bonds; if a bond broke, K, K^-1 and the damage are recomputed
+ *     (Eqs. 34, 49);
+ *   - F_{n+1} = N_{n+1} K^-1, F_n = N_n K^-1 (Eqs. 36, 38);
+ *   - Hughes-Winget update of the Cauchy stress (Eqs. 37-46, nosbpd_stress_update.h);
+ *   - P = J sigma F^-T (Eq. 35) and B_I = P K^-1 - G C_w F_{n+1}.
+ * Pass 2, per point I, the gather form of Eq. 32 with T_I<xi> = omega P_I K_I^-1 xi
+ * (Eq. 33) and T_J<-xi> = -omega P_J K_J^-1 xi, plus the stabilisation
+ * T_s,I<xi> = G C_w omega (y - F_I xi) (nosbpd_stabilisation.h):
+ *   f_I = V_I sum_J omega V_J [(B_I + B_J) xi + (s_I + s_J) y]
+ * [N, per unit thickness in 2D], with s = G C_w (0 for a point without force state).
+ *
+ * A point without force state (singular K, or inverted F with failure on) has
+ * B = 0 and s = 0: it still feels its neighbours' force states through its bonds,
+ * exerts none of its own, and its stress is zero. */
+#include <stdio.h>
+
+#include "nosbpd_internal.h"
+#include "nosbpd_stress_update.h"
+
+#define NO_FORCE_STATE (NOSBPD_POINT_SINGULAR_SHAPE | NOSBPD_POINT_INVERTED)
+
+/* Pass-1 outcome of a point. */
+enum { POINT_OK = 0, POINT_BECAME_SINGULAR = 1, POINT_INVERTED = 2, POINT_NOT_FINITE = 3 };
+
+static void clear_point(solid_model *m, int i)
+{
+    double *g = m->gather + (int64_t)i * NOSBPD_GATHER_STRIDE;
+    for (int k = 0; k < NOSBPD_GATHER_STRIDE; k++)
+        g[k] = 0.0;
+    for (int k = 0; k < 6; k++)
+        m->stress[(int64_t)i * 6 + k] = 0.0;
+}
+
+static int all_finite(const double *a, int count)
+{
+    for (int k = 0; k < count; k++)
+        if (!isfinite(a[k]))
+            return 0;
+    return 1;
+}
+
+/* Pass 1 for point i; returns a POINT_* outcome and the number of bonds it broke. */
+static int update_point(solid_model *m, const solid_particles *p, const double *x_prev, int i,
+                        int *broke)
+{
+    const nosbpd_bonds *b = &m->bonds;
+    const double *restrict x = p->x;
+    const double *restrict xi_all = b->xi;
+    const double *restrict weight = b->weight;
+    const int32_t *restrict nb = b->neighbour;
+    uint8_t *restrict intact = b->intact;
+    const int failure = m->failure;
+    const double crit2 = (1.0 + m->critical_stretch) * (1.0 + m->critical_stretch);
+
+    double n1[FSI_MAT_SIZE], n0[FSI_MAT_SIZE];
+    fsi_mat_zero(n1);
+    fsi_mat_zero(n0);
+    const double *xi_pos = x + (int64_t)i * FSI_DIM, *xp_pos = x_prev + (int64_t)i * FSI_DIM;
+    int broken_here = 0;
+    for (int64_t q = b->offset[i]; q < b->offset[i + 1]; q++) {
+        if (!intact[q])
+            continue;
+        const int j = nb[q];
+        const double *xi = xi_all + q * FSI_DIM;
+        double y1[FSI_DIM], y0[FSI_DIM];
+        for (int d = 0; d < FSI_DIM; d++) {
+            y1[d] = x[(int64_t)j * FSI_DIM + d] - xi_pos[d];
+            y0[d] = x_prev[(int64_t)j * FSI_DIM + d] - xp_pos[d];
+        }
+        if (failure) {
+            /* Eq. 47, s = (|y| - |xi|) / |xi| > s0, as |y|^2 > (1 + s0)^2 |xi|^2. */
+            const double len = b->length[q];
+            if (fsi_vec_dot(y1, y1) > crit2 * (len * len)) {
+                intact[q] = 0;
+                broken_here++;
+                continue;
+            }
+        }
+        fsi_mat_add_outer(n1, weight[q], y1, xi);
+        fsi_mat_add_outer(n0, weight[q], y0, xi);
+    }
+    *broke = broken_here;
+
+    const uint8_t had = m->flags[i];
+    int outcome = POINT_OK;
+    if (broken_here && !(had & NO_FORCE_STATE) && nosbpd_shape_tensor(m, p, i) != 0) {
+        m->flags[i] |= NOSBPD_POINT_SINGULAR_SHAPE;
+        outcome = POINT_BECAME_SINGULAR;
+    } else if (broken_here && (had & NO_FORCE_STATE)) {
+        (void)nosbpd_shape_tensor(m, p, i); /* damage and intact count only */
+    }
+    if (m->flags[i] & NO_FORCE_STATE) {
+        clear_point(m, i);
+        return outcome;
+    }
+
+    const double *k_inv = m->k_inv + (int64_t)i * FSI_MAT_SIZE;
+    double *f1 = m->defgrad + (int64_t)i * FSI_MAT_SIZE;
+    double f0[FSI_MAT_SIZE], f1_new[FSI_MAT_SIZE];
+    fsi_mat_mul(n1, k_inv, f1_new); /* Eq. 36 */
+    fsi_mat_mul(n0, k_inv, f0);
+    if (!all_finite(f1_new, FSI_MAT_SIZE) || !all_finite(f0, FSI_MAT_SIZE)) {
+        fsi_mat_copy(f1_new, f1);
+        return POINT_NOT_FINITE;
+    }
+
+    double *stress = m->stress + (int64_t)i * 6;
+    double pk1[FSI_MAT_SIZE];
+    if (fsi_mat_det(f1_new) <= 0.0 ||
+        nosbpd_hughes_winget(&m->mat, f0, f1_new, stress, &m->mstate[i],
+                             &m->thickness_stretch[i], &m->work[i]) != 0 ||
+        nosbpd_first_piola(stress, f1_new, m->thickness_stretch[i], pk1) != 0) {
+        fsi_mat_copy(f1_new, f1);
+        return POINT_INVERTED;
+    }
+    fsi_mat_copy(f1_new, f1);
+
+    /* B = P K^-1 - G C_w F. */
+    double *g = m->gather + (int64_t)i * NOSBPD_GATHER_STRIDE;
+    fsi_mat_mul(pk1, k_inv, g);
+    const double s = m->stab_modulus;
+    for (int k = 0; k < FSI_MAT_SIZE; k++)
+        g[k] -= s * f1[k];
+    g[FSI_MAT_SIZE] = s;
+    return POINT_OK;
+}
+
+/* Pass 2 for point i: the gather of Eq. 32. */
+static void gather_force(const solid_model *m, const solid_particles *p, int i, double *force)
+{
+    const nosbpd_bonds *b = &m->bonds;
+    const double *restrict x = p->x;
+    const double *restrict xi_all = b->xi;
+    const double *restrict weight = b->weight;
+    const int32_t *restrict nb = b->neighbour;
+    const uint8_t *restrict intact = b->intact;
+    const double *restrict gather = m->gather;
+
+    const double *gi = gather + (int64_t)i * NOSBPD_GATHER_STRIDE;
+    const double si = gi[FSI_MAT_SIZE];
+    const double *xi_pos = x + (int64_t)i * FSI_DIM;
+    double f[FSI_DIM];
+    for (int d = 0; d < FSI_DIM; d++)
+        f[d] = 0.0;
+    for (int64_t q = b->offset[i]; q < b->offset[i + 1]; q++) {
+        if (!intact[q])
+            continue;
+        const int j = nb[q];
+        const double *gj = gather + (int64_t)j * NOSBPD_GATHER_STRIDE;
+        const double *xi = xi_all + q * FSI_DIM;
+        const double s = si + gj[FSI_MAT_SIZE];
+        const double w = weight[q];
+        for (int r = 0; r < FSI_DIM; r++) {
+            double t = s * (x[(int64_t)j * FSI_DIM + r] - xi_pos[r]);
+            for (int c = 0; c < FSI_DIM; c++)
+                t += (gi[r * FSI_DIM + c] + gj[r * FSI_DIM + c]) * xi[c];
+            f[r] += w * t;
+        }
+    }
+    const double vi = p->volume[i];
+    for (int d = 0; d < FSI_DIM; d++)
+        force[(int64_t)i * FSI_DIM + d] = vi * f[d];
+}
+
+static void describe_point(const solid_particles *p, int i, char *buf, size_t size)
+{
+    int len = snprintf(buf, size, "point id %d at (", p->id ? p->id[i] : i);
+    for (int d = 0; d < FSI_DIM && len > 0 && (size_t)len < size; d++)
+        len += snprintf(buf + len, size - (size_t)len, "%s%.6g", d ? ", " : "",
+                        p->x[(int64_t)i * FSI_DIM + d]);
+    for (int d = 0; d < FSI_DIM && len > 0 && (size_t)len < size; d++)
+        len += snprintf(buf + len, size - (size_t)len, "%s%.6g", d ? ", " : ") (reference (",
+                        p->x0[(int64_t)i * FSI_DIM + d]);
+    if (len > 0 && (size_t)len < size)
+        snprintf(buf + len, size - (size_t)len, "))");
+}
+
+int solid_model_internal_force(solid_model *m, const solid_particles *p, const double *x_prev,
+                               double dt, double t, double *force, char *msg, size_t msg_size)
+{
+    (void)dt; /* the update is incremental in positions; dt is not needed */
+    const int n = m->n;
+    int first_bad = n, new_flags = 0;
+    int64_t broken = 0;
+
+    const int parallel = m->bonds.n_bonds >= NOSBPD_PARALLEL_MIN_BONDS;
+#pragma omp parallel for schedule(static) if (parallel) reduction(min : first_bad) \
+    reduction(+ : new_flags, broken)
+    for (int i = 0; i < n; i++) {
+        int broke = 0;
+        const int outcome = update_point(m, p, x_prev, i, &broke);
+        broken += broke;
+        if (outcome == POINT_NOT_FINITE || (outcome == POINT_INVERTED && !m->failure)) {
+            if (i < first_bad)
+                first_bad = i;
+        } else if (outcome == POINT_INVERTED) {
+            m->flags[i] |= NOSBPD_POINT_INVERTED;
+            clear_point(m, i);
+            new_flags++;
+        } else if (outcome == POINT_BECAME_SINGULAR) {
+            new_flags++;
+        }
+    }
+    m->n_broken += broken;
+
+    if (first_bad < n) {
+        char at[256];
+        describe_point(p, first_bad, at, sizeof at);
+        const double *f = m->defgrad + (int64_t)first_bad * FSI_MAT_SIZE;
+        const double det = fsi_mat_det(f);
+        if (!isfinite(det))
+            snprintf(msg, msg_size, "nosbpd: the deformation gradient of %s is not finite at "
+                     "t = %.9g s (positions not finite?)", at, t);
+        else
+            snprintf(msg, msg_size, "nosbpd: the deformation gradient of %s is inverted or "
+                     "singular (det F = %.6g) at t = %.9g s: the body is crushed or the step "
+                     "is unstable (with failure = true such a point would be taken out)", at,
+                     det, t);
+        return -1;
+    }
+    if (new_flags) {
+        int count = 0;
+        for (int i = 0; i < n; i++) {
+            if (!(m->flags[i] & NO_FORCE_STATE))
+                continue;
+            count++;
+            if (!(m->flags[i] & NOSBPD_POINT_WARNED))
+                nosbpd_warn_point(m, p, i,
+                                  (m->flags[i] & NOSBPD_POINT_INVERTED)
+                                      ? "its deformation gradient inverted: it carries no "
+                                        "force state from now on"
+                                      : "after bond failure its family is too poor for a "
+                                        "shape tensor: it carries no force state from now on",
+                                  t);
+        }
+        m->n_without_force_state = count;
+    }
+
+#pragma omp parallel for schedule(static) if (parallel)
+    for (int i = 0; i < n; i++)
+        gather_force(m, p, i, force);
+    return 0;
+}

@@ -1,0 +1,17 @@
+/* The case keys of the NOSB-PD model ([solid] with solver = nosbpd), defined in
+ * nosbpd_keys.c (library fsi_solid_keys, which the launcher's registry links). */
+#ifndef NOSBPD_KEYS_H
+#define NOSBPD_KEYS_H
+
+#include "case_file.h"
+
+/* horizon_factor, influence_function, zero_energy_coefficient, failure,
+ * critical_stretch, fracture_energy. */
+extern const fsi_key_table fsi_nosbpd_keys;
+
+/* Defaults, shared with solid_model_create's fallbacks for unvalidated cases. */
+#define NOSBPD_DEFAULT_HORIZON_FACTOR 3.0
+#define NOSBPD_DEFAULT_INFLUENCE "inverse"
+#define NOSBPD_DEFAULT_ZERO_ENERGY_COEFFICIENT 0.1
+
+#endif

@@ -1,0 +1,343 @@
+/* The NOSB-PD model behind solid_model.h: creation (keys, bonds, reference shape
+ * tensors, stable step), the surface set, output fields, the energy, and the
+ * accessors of nosbpd.h. The internal force is in nosbpd_force.c. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "nosbpd_failure.h"
+#include "nosbpd_internal.h"
+#include "nosbpd_keys.h"
+#include "nosbpd_stabilisation.h"
+
+static const char *const SECTION = "solid";
+
+#if FSI_DIM == 2
+#define FAMILY_TOO_POOR                                                                   \
+    "its family is too poor for a shape tensor (fewer than 3 bonds, or all nearly on a line)"
+#else
+#define FAMILY_TOO_POOR                                                                   \
+    "its family is too poor for a shape tensor (fewer than 4 bonds, or all nearly on a plane)"
+#endif
+
+void solid_model_free(solid_model *m)
+{
+    if (!m)
+        return;
+    nosbpd_bonds_free(&m->bonds);
+    free(m->k_inv);
+    free(m->defgrad);
+    free(m->gather);
+    free(m->stress);
+    free(m->mstate);
+    free(m->work);
+    free(m->thickness_stretch);
+    free(m->family_volume);
+    free(m->damage);
+    free(m->intact_count);
+    free(m->flags);
+    free(m->scratch);
+    free(m->iscratch);
+    free(m);
+}
+
+/* Reads the model's keys (defaults as fallbacks: unit tests may pass unvalidated
+ * cases). Returns 0, or -1 with msg. */
+static int read_keys(solid_model *m, const fsi_case *c, char *msg, size_t msg_size)
+{
+    const double factor =
+        fsi_case_get_real(c, SECTION, "horizon_factor", NOSBPD_DEFAULT_HORIZON_FACTOR);
+    if (!(factor >= 1.0 && factor <= 10.0)) {
+        snprintf(msg, msg_size, "[solid] horizon_factor = %g: needs 1 <= m <= 10", factor);
+        return -1;
+    }
+    m->delta = factor * m->dx;
+    const char *inf = fsi_case_get(c, SECTION, "influence_function");
+    if (nosbpd_influence_parse(inf ? inf : NOSBPD_DEFAULT_INFLUENCE, &m->influence) != 0) {
+        snprintf(msg, msg_size, "[solid] influence_function = %s: needs one, inverse or "
+                 "gaussian", inf);
+        return -1;
+    }
+    m->zero_energy_coefficient = fsi_case_get_real(c, SECTION, "zero_energy_coefficient",
+                                                   NOSBPD_DEFAULT_ZERO_ENERGY_COEFFICIENT);
+    if (!(m->zero_energy_coefficient >= 0.0 && m->zero_energy_coefficient <= 10.0)) {
+        snprintf(msg, msg_size, "[solid] zero_energy_coefficient = %g: needs 0 <= G <= 10",
+                 m->zero_energy_coefficient);
+        return -1;
+    }
+    m->failure = fsi_case_get_bool(c, SECTION, "failure", 0);
+    const double s0 = fsi_case_get_real(c, SECTION, "critical_stretch", 0.0);
+    const double g0 = fsi_case_get_real(c, SECTION, "fracture_energy", 0.0);
+    if (!(s0 >= 0.0) || !(g0 >= 0.0)) {
+        snprintf(msg, msg_size, "[solid] critical_stretch = %g, fracture_energy = %g: neither "
+                 "may be negative", s0, g0);
+        return -1;
+    }
+    m->critical_stretch = 0.0;
+    if (m->failure) {
+        /* critical_stretch wins when both are given. */
+        m->critical_stretch =
+            s0 > 0.0 ? s0 : nosbpd_critical_stretch_from_energy(&m->mat, g0, m->delta);
+        if (!(m->critical_stretch > 0.0) || !isfinite(m->critical_stretch)) {
+            snprintf(msg, msg_size, "[solid] failure = true needs critical_stretch > 0 or "
+                     "fracture_energy > 0");
+            return -1;
+        }
+    }
+    return 0;
+}
+
+#define ALLOC(ptr, count)                                                             \
+    do {                                                                              \
+        (ptr) = calloc((size_t)(count) > 0 ? (size_t)(count) : 1, sizeof *(ptr));     \
+        if (!(ptr))                                                                   \
+            goto out_of_memory;                                                       \
+    } while (0)
+
+/* Silling & Askari 2005 bound dt < sqrt(2 rho / sum_J V_J C_IJ), with the bond
+ * stiffness C_IJ = c / |xi| of the bond-based material of the same bulk modulus
+ * (standing in for the correspondence force state) plus 2 G C_w omega of the
+ * stabilisation (d(T_s,I - T_s,J)/dY = 2 G C_w omega), over the reference
+ * families; and the lattice bound dx / c_p, c_p = sqrt(M / rho). The smaller one. */
+static double stable_step(const solid_model *m, const solid_particles *p)
+{
+    const double c = nosbpd_micromodulus(&m->mat, m->delta);
+    const double wave = material_wave_modulus(&m->mat);
+    const nosbpd_bonds *b = &m->bonds;
+    double dt = INFINITY;
+    for (int i = 0; i < m->n; i++) {
+        double stiffness = 0.0;
+        for (int64_t q = b->offset[i]; q < b->offset[i + 1]; q++) {
+            const double vj = p->volume[b->neighbour[q]];
+            stiffness += vj * c / b->length[q] + 2.0 * m->stab_modulus * b->weight[q];
+        }
+        const double rho = p->density ? p->density[i] : m->mat.density;
+        if (stiffness > 0.0)
+            dt = fmin(dt, sqrt(2.0 * rho / stiffness));
+        dt = fmin(dt, m->dx / sqrt(wave / rho));
+    }
+    return dt;
+}
+
+solid_model *solid_model_create(const fsi_case *c, const solid_particles *p, char *msg,
+                                size_t msg_size)
+{
+    if (msg && msg_size)
+        msg[0] = '\0';
+    solid_model *m = calloc(1, sizeof *m);
+    if (!m) {
+        snprintf(msg, msg_size, "nosbpd: out of memory creating the model");
+        return NULL;
+    }
+    if (material_from_case(&m->mat, c, SECTION, msg, msg_size) != 0) {
+        free(m);
+        return NULL;
+    }
+    m->n = p->n;
+    m->dx = p->spacing;
+    if (!(m->dx > 0.0)) {
+        snprintf(msg, msg_size, "nosbpd: lattice spacing %g is not positive", m->dx);
+        free(m);
+        return NULL;
+    }
+    if (read_keys(m, c, msg, msg_size) != 0) {
+        free(m);
+        return NULL;
+    }
+    if (nosbpd_bonds_build(&m->bonds, p->x0, p->volume, p->n, m->delta, m->dx,
+                           m->influence) != 0) {
+        snprintf(msg, msg_size, "nosbpd: cannot build the bonds of %d points (out of memory "
+                 "or a reference position is not finite)", p->n);
+        free(m);
+        return NULL;
+    }
+    const int n = p->n;
+    ALLOC(m->k_inv, (int64_t)n * FSI_MAT_SIZE);
+    ALLOC(m->defgrad, (int64_t)n * FSI_MAT_SIZE);
+    ALLOC(m->gather, (int64_t)n * NOSBPD_GATHER_STRIDE);
+    ALLOC(m->stress, (int64_t)n * 6);
+    ALLOC(m->mstate, n);
+    ALLOC(m->work, n);
+    ALLOC(m->thickness_stretch, n);
+    ALLOC(m->family_volume, n);
+    ALLOC(m->damage, n);
+    ALLOC(m->intact_count, n);
+    ALLOC(m->flags, n);
+    ALLOC(m->scratch, (int64_t)n * FSI_MAT_SIZE);
+    ALLOC(m->iscratch, n);
+
+    m->full = nosbpd_full_family_of_lattice(m->delta, m->dx, m->influence);
+    m->stab_modulus =
+        nosbpd_stabilisation_modulus(&m->mat, m->zero_energy_coefficient, m->delta, &m->full);
+    for (int i = 0; i < n; i++) {
+        double v = 0.0;
+        for (int64_t q = m->bonds.offset[i]; q < m->bonds.offset[i + 1]; q++)
+            v += p->volume[m->bonds.neighbour[q]];
+        m->family_volume[i] = v;
+        m->thickness_stretch[i] = 1.0;
+        fsi_mat_identity(m->defgrad + (int64_t)i * FSI_MAT_SIZE);
+        if (nosbpd_shape_tensor(m, p, i) != 0) {
+            m->flags[i] |= NOSBPD_POINT_SINGULAR_SHAPE;
+            m->n_without_force_state++;
+            nosbpd_warn_point(m, p, i, FAMILY_TOO_POOR ": it carries no force state of "
+                              "its own", 0.0);
+        }
+    }
+    if (m->n_warnings > NOSBPD_MAX_WARNINGS)
+        fprintf(stderr, "nosbpd: warning: %d points in all have no usable shape tensor\n",
+                m->n_warnings);
+    m->stable_dt = stable_step(m, p);
+    return m;
+
+out_of_memory:
+    snprintf(msg, msg_size, "nosbpd: out of memory for the state of %d points", p->n);
+    solid_model_free(m);
+    return NULL;
+}
+
+double solid_model_stable_dt(const solid_model *m, const solid_particles *p)
+{
+    (void)p;
+    /* Bonds only break, which only lowers the stiffness: the reference bound holds. */
+    return m->stable_dt;
+}
+
+int solid_model_surface(const solid_model *m, const solid_particles *p, uint8_t *surface)
+{
+    int count = 0;
+    for (int i = 0; i < p->n; i++) {
+        surface[i] = m->intact_count[i] < m->full.count;
+        count += surface[i];
+    }
+    return count;
+}
+
+int solid_model_write_fields(const solid_model *m, fsi_h5_writer *out)
+{
+    const int n = m->n;
+    double *buf = m->scratch;
+    int32_t *ibuf = m->iscratch;
+    for (int i = 0; i < n; i++)
+        fsi_sym6_to_mat(m->stress + (int64_t)i * 6, buf + (int64_t)i * FSI_MAT_SIZE);
+    if (fsi_h5_write_field_real(out, "stress", buf, FSI_MAT_SIZE) != 0)
+        return -1;
+    if (fsi_h5_write_field_real(out, "damage", m->damage, 1) != 0)
+        return -1;
+    for (int i = 0; i < n; i++)
+        buf[i] = m->mstate[i].equivalent_plastic_strain;
+    if (fsi_h5_write_field_real(out, "equivalent_plastic_strain", buf, 1) != 0)
+        return -1;
+    if (fsi_h5_write_field_int(out, "intact_bonds", m->intact_count, 1) != 0)
+        return -1;
+    for (int i = 0; i < n; i++)
+        ibuf[i] = (m->flags[i] & (NOSBPD_POINT_SINGULAR_SHAPE | NOSBPD_POINT_INVERTED)) != 0;
+    if (fsi_h5_write_field_int(out, "no_force_state", ibuf, 1) != 0)
+        return -1;
+    return 0;
+}
+
+/* Sum over points of V_I (w_I + W_s,I): w_I the stress work per reference volume
+ * accumulated by the Hughes-Winget update (= 1/2 sigma : eps for linear elasticity;
+ * with plasticity it includes the dissipated plastic work), W_s,I the energy of the
+ * zero-energy mode control, 1/2 G C_w sum_J omega V_J |z|^2, at the current
+ * positions with F of the last internal-force call. Per-point terms in parallel,
+ * the sum in index order (independent of the thread count). */
+double solid_model_strain_energy(const solid_model *m, const solid_particles *p)
+{
+    const nosbpd_bonds *b = &m->bonds;
+    double *restrict e = m->scratch;
+    const double s = m->stab_modulus;
+#pragma omp parallel for schedule(static) if (b->n_bonds >= NOSBPD_PARALLEL_MIN_BONDS)
+    for (int i = 0; i < m->n; i++) {
+        double ws = 0.0;
+        if (s > 0.0 && !(m->flags[i] & (NOSBPD_POINT_SINGULAR_SHAPE | NOSBPD_POINT_INVERTED))) {
+            const double *f = m->defgrad + (int64_t)i * FSI_MAT_SIZE;
+            const double *xi_pos = p->x + (int64_t)i * FSI_DIM;
+            for (int64_t q = b->offset[i]; q < b->offset[i + 1]; q++) {
+                if (!b->intact[q])
+                    continue;
+                const double *xi = b->xi + q * FSI_DIM;
+                const double *xj = p->x + (int64_t)b->neighbour[q] * FSI_DIM;
+                double fx[FSI_DIM], z2 = 0.0;
+                fsi_mat_vec(f, xi, fx);
+                for (int d = 0; d < FSI_DIM; d++) {
+                    const double z = xj[d] - xi_pos[d] - fx[d];
+                    z2 += z * z;
+                }
+                ws += b->weight[q] * z2;
+            }
+            ws *= 0.5 * s;
+        }
+        e[i] = p->volume[i] * (m->work[i] + ws);
+    }
+    double total = 0.0;
+    for (int i = 0; i < m->n; i++)
+        total += e[i];
+    return total;
+}
+
+int nosbpd_points_without_force_state(const solid_model *m)
+{
+    return m->n_without_force_state;
+}
+
+int64_t nosbpd_bond_count(const solid_model *m)
+{
+    return m->bonds.n_bonds;
+}
+
+int64_t nosbpd_broken_bond_count(const solid_model *m)
+{
+    return m->n_broken;
+}
+
+double nosbpd_horizon(const solid_model *m)
+{
+    return m->delta;
+}
+
+double nosbpd_critical_stretch(const solid_model *m)
+{
+    return m->critical_stretch;
+}
+
+double nosbpd_stabilisation_modulus_of(const solid_model *m)
+{
+    return m->stab_modulus;
+}
+
+int nosbpd_full_family_count(const solid_model *m)
+{
+    return m->full.count;
+}
+
+const nosbpd_bonds *nosbpd_model_bonds(const solid_model *m)
+{
+    return &m->bonds;
+}
+
+double *nosbpd_stress(solid_model *m)
+{
+    return m->stress;
+}
+
+const double *nosbpd_deformation_gradient(const solid_model *m)
+{
+    return m->defgrad;
+}
+
+const double *nosbpd_shape_tensor_inverse(const solid_model *m)
+{
+    return m->k_inv;
+}
+
+const double *nosbpd_damage(const solid_model *m)
+{
+    return m->damage;
+}
+
+const uint8_t *nosbpd_point_flags(const solid_model *m)
+{
+    return m->flags;
+}

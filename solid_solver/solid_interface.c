@@ -1,0 +1,104 @@
+/* Interface gather and load take (solid_interface.h). */
+#include "solid_interface.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+int solid_interface_init(solid_interface_buffers *b, int n_particles)
+{
+    memset(b, 0, sizeof *b);
+    size_t n = n_particles > 0 ? (size_t)n_particles : 1, v = n * FSI_DIM;
+    b->surface = calloc(n, 1);
+    b->received = calloc(n, 1);
+    b->state.id = malloc(n * sizeof *b->state.id);
+    b->state.position = malloc(v * sizeof(double));
+    b->state.velocity = malloc(v * sizeof(double));
+    b->state.acceleration = malloc(v * sizeof(double));
+    b->state.volume = malloc(n * sizeof(double));
+    if (!b->surface || !b->received || !b->state.id || !b->state.position ||
+        !b->state.velocity || !b->state.acceleration || !b->state.volume) {
+        solid_interface_free(b);
+        return -1;
+    }
+    b->capacity = n_particles;
+    return 0;
+}
+
+void solid_interface_free(solid_interface_buffers *b)
+{
+    free(b->surface);
+    free(b->received);
+    free(b->state.id);
+    free(b->state.position);
+    free(b->state.velocity);
+    free(b->state.acceleration);
+    free(b->state.volume);
+    memset(b, 0, sizeof *b);
+}
+
+int solid_interface_gather(solid_interface_buffers *b, const solid_particles *p)
+{
+    int n = 0;
+    for (int i = 0; i < p->n && i < b->capacity; i++) {
+        if (!b->surface[i])
+            continue;
+        b->state.id[n] = p->id[i];
+        for (int d = 0; d < FSI_DIM; d++) {
+            b->state.position[n * FSI_DIM + d] = p->x[i * FSI_DIM + d];
+            b->state.velocity[n * FSI_DIM + d] = p->v[i * FSI_DIM + d];
+            b->state.acceleration[n * FSI_DIM + d] = p->a[i * FSI_DIM + d];
+        }
+        b->state.volume[n] = p->volume[i];
+        n++;
+    }
+    b->state.n = n;
+    return n;
+}
+
+int solid_interface_take(solid_interface_buffers *b, const fsi_interface *in,
+                         const solid_particles *p, double *force, double *pressure, char *msg,
+                         size_t msg_size)
+{
+    memset(force, 0, (size_t)p->n * FSI_DIM * sizeof *force);
+    if (pressure)
+        memset(pressure, 0, (size_t)p->n * sizeof *pressure);
+    if (in->n <= 0)
+        return 0;
+    if (!in->id || !in->force) {
+        snprintf(msg, msg_size, "the fluid sent %d loads without ids or forces", in->n);
+        return -1;
+    }
+    memset(b->received, 0, (size_t)b->capacity);
+    for (int j = 0; j < in->n; j++) {
+        int32_t id = in->id[j];
+        if (id < 0 || id >= p->n || id >= b->capacity) {
+            snprintf(msg, msg_size, "the fluid sent a load for particle id %d, which does not "
+                     "exist (the solid has %d particles)", (int)id, p->n);
+            return -1;
+        }
+        if (!b->surface[id]) {
+            snprintf(msg, msg_size, "the fluid sent a load for particle id %d, which was not "
+                     "sent to it in this window", (int)id);
+            return -1;
+        }
+        if (b->received[id]) {
+            snprintf(msg, msg_size, "the fluid sent two loads for particle id %d", (int)id);
+            return -1;
+        }
+        b->received[id] = 1;
+        for (int d = 0; d < FSI_DIM; d++) {
+            double f = in->force[j * FSI_DIM + d];
+            if (!isfinite(f)) {
+                snprintf(msg, msg_size, "the fluid's force on particle id %d is not finite",
+                         (int)id);
+                return -1;
+            }
+            force[id * FSI_DIM + d] = f;
+        }
+        if (pressure && in->pressure)
+            pressure[id] = in->pressure[j];
+    }
+    return 0;
+}

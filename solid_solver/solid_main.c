@@ -1,0 +1,432 @@
+/* The solid participant: the main loop every solid model shares (README.md in this
+ * folder). Built once per model as fsi-solid-<model>; the model behind
+ * solid_model.h supplies internal forces, the stable step, the surface and its own
+ * output fields, this file everything else:
+ *
+ *   setup   geometry (blocks, regions) -> particles, material density, the model,
+ *           prescribed loads, initial velocity, probes, output file
+ *   window  publish the surface state at t_k, read the fluid's loads (held over the
+ *           window, serial-staggered), sub-cycle velocity Verlet (000 Eq. 55) in
+ *           n = ceil(window / (safety * stable step)) equal sub-steps, check health
+ *           after every sub-step and the energy after every window, probes, output,
+ *           propose DBL_MAX (sub-cycling: the solid never limits the window)
+ *
+ * A failure anywhere stops everyone with fsi_abort naming what, the particle, where
+ * and when; nothing non-finite is ever written or sent. */
+#include <float.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "dim.h"
+#include "geometry.h"
+#include "h5_output.h"
+#include "initial_velocity.h"
+#include "log.h"
+#include "material.h"
+#include "participant.h"
+#include "solid_integrate.h"
+#include "solid_interface.h"
+#include "solid_loads.h"
+#include "solid_model.h"
+#include "solid_probes.h"
+#include "timers.h"
+
+#define ROLE "solid"
+/* More sub-steps in one window than this means a broken stable step, not a run. */
+#define MAX_SUBSTEPS 100000000L
+/* A point farther than this many body diagonals outside the initial bounding box
+ * has left any plausible domain. */
+#define ESCAPE_DIAGONALS 10.0
+
+typedef struct {
+    const fsi_case *c;
+    solid_geometry geometry;
+    solid_particles p;
+    material mat;
+    solid_model *model;
+    solid_loads loads;
+    solid_probes probes;
+    solid_interface_buffers iface;
+    solid_integrator integrator;
+    double safety, energy_limit;
+    double *f_int, *f_ext, *f_ext_prev, *f_fluid, *p_fluid, *x_prev, *scratch;
+    /* energy check */
+    double energy0, work, work_in, energy_floor;
+    double box_min[FSI_DIM], box_max[FSI_DIM];
+    fsi_h5_writer *out;
+    fsi_timers timers;
+    int t_force, t_integrate, t_exchange, t_output;
+    char msg[512];
+} solid_run;
+
+static double *new_vector(int n, int ncomp)
+{
+    return calloc((size_t)n * (size_t)ncomp, sizeof(double));
+}
+
+/* "(x, y)" of particle i's reference position, for messages. */
+static const char *where_text(const solid_run *s, int i, char *buf, size_t size)
+{
+    int len = snprintf(buf, size, "(");
+    for (int d = 0; d < FSI_DIM && len < (int)size; d++)
+        len += snprintf(buf + len, size - (size_t)len, "%s%.6g", d ? ", " : "",
+                        s->p.x0[i * FSI_DIM + d]);
+    if (len < (int)size)
+        snprintf(buf + len, size - (size_t)len, ")");
+    return buf;
+}
+
+static void free_run(solid_run *s)
+{
+    if (s->out)
+        fsi_h5_close(s->out);
+    if (s->model)
+        solid_model_free(s->model);
+    solid_probes_free(&s->probes);
+    solid_loads_free(&s->loads);
+    solid_interface_free(&s->iface);
+    solid_particles_free(&s->p);
+    solid_geometry_free(&s->geometry);
+    free(s->f_int);
+    free(s->f_ext);
+    free(s->f_ext_prev);
+    free(s->f_fluid);
+    free(s->p_fluid);
+    free(s->x_prev);
+    free(s->scratch);
+}
+
+static int write_static(solid_run *s)
+{
+    const solid_particles *p = &s->p;
+    int32_t *flags = malloc((size_t)p->n * sizeof *flags);
+    if (!flags)
+        return -1;
+    for (int i = 0; i < p->n; i++)
+        flags[i] = p->flags[i];
+    int rc = fsi_h5_write_static_int(s->out, "id", p->id, p->n, 1) |
+             fsi_h5_write_static_real(s->out, "x0", p->x0, p->n, FSI_DIM) |
+             fsi_h5_write_static_real(s->out, "volume", p->volume, p->n, 1) |
+             fsi_h5_write_static_real(s->out, "density", p->density, p->n, 1) |
+             fsi_h5_write_static_int(s->out, "block", p->block, p->n, 1) |
+             fsi_h5_write_static_int(s->out, "flags", flags, p->n, 1);
+    free(flags);
+    return rc ? -1 : 0;
+}
+
+/* Everything before the first window. Returns 0, or -1 with s->msg set. */
+static int setup(solid_run *s, fsi_participant *part)
+{
+    const fsi_case *c = s->c;
+    size_t ms = sizeof s->msg;
+    if (solid_geometry_read(&s->geometry, c, ROLE, s->msg, ms) != 0)
+        return -1;
+    if (material_from_case(&s->mat, c, ROLE, s->msg, ms) != 0)
+        return -1;
+    if (solid_geometry_build(&s->geometry, s->mat.density, &s->p, s->msg, ms) != 0)
+        return -1;
+    solid_particles *p = &s->p;
+
+    s->safety = fsi_case_get_real(c, ROLE, "time_step_safety", 0.8);
+    s->energy_limit = fsi_case_get_real(c, ROLE, "energy_growth_limit", 2.0);
+    s->integrator.damping = fsi_case_get_real(c, ROLE, "damping", 0.0);
+    if (fsi_case_get_vector(c, ROLE, "gravity", s->integrator.gravity) != 0)
+        memset(s->integrator.gravity, 0, sizeof s->integrator.gravity);
+    s->integrator.max_step = p->spacing;
+
+    s->f_int = new_vector(p->n, FSI_DIM);
+    s->f_ext = new_vector(p->n, FSI_DIM);
+    s->f_ext_prev = new_vector(p->n, FSI_DIM);
+    s->f_fluid = new_vector(p->n, FSI_DIM);
+    s->p_fluid = new_vector(p->n, 1);
+    s->x_prev = new_vector(p->n, FSI_DIM);
+    s->scratch = new_vector(p->n, FSI_DIM);
+    if (!s->f_int || !s->f_ext || !s->f_ext_prev || !s->f_fluid || !s->p_fluid ||
+        !s->x_prev || !s->scratch || solid_interface_init(&s->iface, p->n) != 0) {
+        snprintf(s->msg, ms, "out of memory for %d solid particles", p->n);
+        return -1;
+    }
+    if (solid_loads_init(&s->loads, &s->geometry, p, s->msg, ms) != 0)
+        return -1;
+    /* c0 = sqrt(K / rho) as Gray et al. 2001 define it for the mode's amplitude
+     * (initial_velocity.h). */
+    double c0 = sqrt(s->mat.bulk_modulus / s->mat.density);
+    if (solid_initial_velocity(c, ROLE, c0, p, s->msg, ms) != 0)
+        return -1;
+    if (solid_probes_init(&s->probes, &s->geometry, p, part, s->msg, ms) != 0)
+        return -1;
+
+    s->model = solid_model_create(c, p, s->msg, ms);
+    if (!s->model)
+        return -1;
+    double stable = solid_model_stable_dt(s->model, p);
+    if (!(stable > 0.0) || !isfinite(stable)) {
+        snprintf(s->msg, ms, "the model's stable step is %g s: nothing can be integrated",
+                 stable);
+        return -1;
+    }
+
+    /* Energy check: the natural scale M (dx / stable step)^2 ~ M c^2 gives the floor
+     * below which energy is round-off (a body at rest has E = 0). */
+    double mass = solid_total_mass(p);
+    double c_wave = p->spacing / stable;
+    s->energy_floor = 1e-12 * mass * c_wave * c_wave;
+    s->energy0 = solid_kinetic_energy(p) + solid_model_strain_energy(s->model, p);
+
+    for (int d = 0; d < FSI_DIM; d++) {
+        s->box_min[d] = INFINITY;
+        s->box_max[d] = -INFINITY;
+    }
+    for (int i = 0; i < p->n; i++)
+        for (int d = 0; d < FSI_DIM; d++) {
+            s->box_min[d] = fmin(s->box_min[d], p->x0[i * FSI_DIM + d]);
+            s->box_max[d] = fmax(s->box_max[d], p->x0[i * FSI_DIM + d]);
+        }
+    double diag = 0.0;
+    for (int d = 0; d < FSI_DIM; d++)
+        diag += (s->box_max[d] - s->box_min[d]) * (s->box_max[d] - s->box_min[d]);
+    diag = fmax(sqrt(diag), p->spacing);
+    for (int d = 0; d < FSI_DIM; d++) {
+        s->box_min[d] -= ESCAPE_DIAGONALS * diag;
+        s->box_max[d] += ESCAPE_DIAGONALS * diag;
+    }
+
+    s->out = fsi_h5_create(fsi_output_dir(part), fsi_participant_name(part),
+                           fsi_case_get(c, ROLE, "solver"));
+    if (!s->out) {
+        snprintf(s->msg, ms, "cannot create the output file in %s", fsi_output_dir(part));
+        return -1;
+    }
+    if (write_static(s) != 0) {
+        snprintf(s->msg, ms, "cannot write the static particle data");
+        return -1;
+    }
+
+    int clamped = 0, loaded = 0;
+    for (int i = 0; i < p->n; i++) {
+        clamped += (p->flags[i] & SOLID_CLAMPED) != 0;
+        loaded += (p->flags[i] & SOLID_LOADED) != 0;
+    }
+    fsi_info("%d particles (%d blocks, %d clamped, %d loaded), spacing %g m, mass %g, "
+             "stable step %g s (sub-step %g s), c0 = sqrt(K/rho) = %g m/s",
+             p->n, s->geometry.n_blocks, clamped, loaded, p->spacing, mass, stable,
+             s->safety * stable, c0);
+    return 0;
+}
+
+/* f_ext = prescribed loads at time t + the fluid's load of this window. */
+static void external_forces(solid_run *s, double t, double *f_ext)
+{
+    size_t nv = (size_t)s->p.n * FSI_DIM;
+    memcpy(f_ext, s->f_fluid, nv * sizeof *f_ext);
+    solid_loads_add(&s->loads, t, f_ext);
+}
+
+/* Publishes the surface state at t_k and takes the fluid's loads of this window. */
+static int exchange(solid_run *s, fsi_participant *part)
+{
+    memset(s->iface.surface, 0, (size_t)s->iface.capacity);
+    if (fsi_coupled(part)) {
+        solid_model_surface(s->model, &s->p, s->iface.surface);
+        solid_interface_gather(&s->iface, &s->p);
+    } else {
+        s->iface.state.n = 0;
+    }
+    if (fsi_write_interface(part, &s->iface.state) != 0) {
+        snprintf(s->msg, sizeof s->msg, "cannot publish the solid state (%d particles)",
+                 s->iface.state.n);
+        return -1;
+    }
+    fsi_interface loads;
+    fsi_read_interface(part, &loads);
+    return solid_interface_take(&s->iface, &loads, &s->p, s->f_fluid, s->p_fluid, s->msg,
+                                sizeof s->msg);
+}
+
+/* Velocity Verlet over one window [t0, t0 + dt] in equal sub-steps. */
+static int advance(solid_run *s, double t0, double dt, int window)
+{
+    solid_particles *p = &s->p;
+    solid_forces forces = {s->f_int, s->f_ext, s->f_ext_prev};
+    /* The acceleration at t_k with this window's fluid load (the one computed at the
+     * end of the last window used the previous load). */
+    external_forces(s, t0, s->f_ext);
+    solid_acceleration(p, &forces, &s->integrator);
+    if (dt <= 0.0)
+        return 0;
+
+    double stable = solid_model_stable_dt(s->model, p);
+    double h_max = s->safety * stable;
+    if (!(h_max > 0.0) || !isfinite(h_max) || dt / h_max > (double)MAX_SUBSTEPS) {
+        snprintf(s->msg, sizeof s->msg, "the model's stable step is %g s at t = %.9g s "
+                 "(window %d): the window of %g s cannot be sub-cycled", stable, t0, window,
+                 dt);
+        return -1;
+    }
+    /* 1e-9: a window equal to a whole number of sub-steps up to round-off does not
+     * get one more. */
+    long n = (long)ceil(dt / h_max - 1e-9);
+    if (n < 1)
+        n = 1;
+    double h = dt / (double)n;
+    for (long j = 0; j < n; j++) {
+        double t = t0 + dt * (double)(j + 1) / (double)n;
+        fsi_timer_start(&s->timers, s->t_integrate);
+        solid_verlet_drift(p, h, s->x_prev);
+        fsi_timer_stop(&s->timers, s->t_integrate);
+
+        fsi_timer_start(&s->timers, s->t_force);
+        int rc = solid_model_internal_force(s->model, p, s->x_prev, h, t, s->f_int, s->msg,
+                                            sizeof s->msg);
+        fsi_timer_stop(&s->timers, s->t_force);
+        if (rc != 0)
+            return -1;
+
+        fsi_timer_start(&s->timers, s->t_integrate);
+        double *swap = s->f_ext_prev;
+        s->f_ext_prev = s->f_ext;
+        s->f_ext = swap;
+        external_forces(s, t, s->f_ext);
+        forces.external = s->f_ext;
+        forces.external_prev = s->f_ext_prev;
+        double dw = 0.0;
+        solid_fault fault;
+        rc = solid_verlet_kick(p, &forces, h, &s->integrator, s->x_prev, &dw, &fault);
+        s->work += dw;
+        s->work_in += fmax(dw, 0.0);
+        fsi_timer_stop(&s->timers, s->t_integrate);
+        if (rc != 0) {
+            char at[128];
+            snprintf(s->msg, sizeof s->msg, "%s at particle %d %s at t = %.9g s (window %d, "
+                     "sub-step %ld of %ld): the integration is unstable",
+                     fault.what, p->id[fault.particle],
+                     where_text(s, fault.particle, at, sizeof at), t, window, j + 1, n);
+            return -1;
+        }
+    }
+    return 0;
+}
+
+/* After a window: every point inside the generous box, energy within its budget. */
+static int check_health(solid_run *s, double t, int window)
+{
+    const solid_particles *p = &s->p;
+    for (int i = 0; i < p->n; i++)
+        for (int d = 0; d < FSI_DIM; d++) {
+            double x = p->x[i * FSI_DIM + d];
+            if (x < s->box_min[d] || x > s->box_max[d]) {
+                char at[128];
+                snprintf(s->msg, sizeof s->msg, "particle %d %s left the domain (more than "
+                         "%g body diagonals from the solid's initial box) at t = %.9g s "
+                         "(window %d)", p->id[i], where_text(s, i, at, sizeof at),
+                         ESCAPE_DIAGONALS, t, window);
+                return -1;
+            }
+        }
+    /* Physically E(t) = E0 + W(t) - D(t) with dissipation D >= 0 (damping, plastic
+     * flow, broken bonds), so E(t) <= E0 + W_in(t), the gross work put in. An
+     * unstable integration creates energy from nothing. */
+    double kinetic = solid_kinetic_energy(p);
+    double strain = solid_model_strain_energy(s->model, p);
+    double energy = kinetic + strain, budget = s->energy0 + s->work_in;
+    if (!isfinite(energy) || energy > s->energy_limit * budget + s->energy_floor) {
+        /* Name the fastest particle: where the instability is growing. */
+        int fastest = 0;
+        double v2max = -1.0;
+        for (int i = 0; i < p->n; i++) {
+            double v2 = 0.0;
+            for (int d = 0; d < FSI_DIM; d++)
+                v2 += p->v[i * FSI_DIM + d] * p->v[i * FSI_DIM + d];
+            if (v2 > v2max || !isfinite(v2)) {
+                v2max = v2;
+                fastest = i;
+                if (!isfinite(v2))
+                    break;
+            }
+        }
+        char at[128];
+        snprintf(s->msg, sizeof s->msg, "energy grew to %.6g J (kinetic %.6g, strain %.6g), "
+                 "%.3g times the initial energy plus the work put in (%.6g J), above "
+                 "energy_growth_limit = %g; fastest: particle %d %s at %.3g m/s; at "
+                 "t = %.9g s (window %d): the integration is unstable", energy, kinetic,
+                 strain, budget > 0 ? energy / budget : INFINITY, budget, s->energy_limit,
+                 p->id[fastest], where_text(s, fastest, at, sizeof at), sqrt(v2max), t,
+                 window);
+        return -1;
+    }
+    return 0;
+}
+
+static int write_frame(solid_run *s, int frame, double t, long window)
+{
+    const solid_particles *p = &s->p;
+    for (int k = 0; k < p->n * FSI_DIM; k++)
+        s->scratch[k] = p->x[k] - p->x0[k];
+    if (fsi_h5_begin_frame(s->out, frame, t, window, p->n, p->x) != 0 ||
+        fsi_h5_write_field_real(s->out, "displacement", s->scratch, FSI_DIM) != 0 ||
+        fsi_h5_write_field_real(s->out, "velocity", p->v, FSI_DIM) != 0 ||
+        fsi_h5_write_field_real(s->out, "acceleration", p->a, FSI_DIM) != 0 ||
+        fsi_h5_write_field_real(s->out, "interface_force", s->f_fluid, FSI_DIM) != 0 ||
+        fsi_h5_write_field_real(s->out, "interface_pressure", s->p_fluid, 1) != 0 ||
+        solid_model_write_fields(s->model, s->out) != 0)
+        return -1;
+    return fsi_h5_end_frame(s->out);
+}
+
+int main(void)
+{
+    fsi_participant *part = fsi_open(NULL, ROLE, NULL, DBL_MAX);
+    if (!part)
+        return FSI_EXIT_RUN_FAILURE;
+    solid_run s;
+    memset(&s, 0, sizeof s);
+    s.c = fsi_participant_case(part);
+    if (setup(&s, part) != 0) {
+        fsi_abort(part, "%s", s.msg);
+        free_run(&s);
+        return FSI_EXIT_RUN_FAILURE;
+    }
+    s.t_force = fsi_timer_index(&s.timers, "internal_force");
+    s.t_integrate = fsi_timer_index(&s.timers, "integration");
+    s.t_exchange = fsi_timer_index(&s.timers, "exchange");
+    s.t_output = fsi_timer_index(&s.timers, "output");
+
+    while (fsi_ongoing(part)) {
+        double dt = fsi_window(part), t0 = fsi_time(part);
+        int window = fsi_window_index(part);
+
+        fsi_timer_start(&s.timers, s.t_exchange);
+        int rc = exchange(&s, part);
+        fsi_timer_stop(&s.timers, s.t_exchange);
+        if (rc != 0) {
+            fsi_abort(part, "window %d: %s", window, s.msg);
+            break;
+        }
+        if (advance(&s, t0, dt, window) != 0 || check_health(&s, t0 + dt, window) != 0) {
+            fsi_abort(part, "%s", s.msg);
+            break;
+        }
+        solid_probes_set(&s.probes, &s.p, part);
+        int frame = fsi_output_frame(part);
+        if (frame >= 0) {
+            fsi_timer_start(&s.timers, s.t_output);
+            rc = write_frame(&s, frame, t0 + dt, window);
+            fsi_timer_stop(&s.timers, s.t_output);
+            if (rc != 0) {
+                fsi_abort(part, "cannot write output frame %d at t = %.9g s (window %d)",
+                          frame, t0 + dt, window);
+                break;
+            }
+        }
+        fsi_advance(part, DBL_MAX);   /* sub-cycling: the solid never limits the window */
+    }
+    if (s.model)
+        fsi_info("energy at the end: kinetic %.6g J, strain %.6g J; initial %.6g J, work "
+                 "of loads, gravity and fluid %.6g J (gross input %.6g J)",
+                 solid_kinetic_energy(&s.p), solid_model_strain_energy(s.model, &s.p),
+                 s.energy0, s.work, s.work_in);
+    free_run(&s);
+    return fsi_close(part, &s.timers);
+}

@@ -1,0 +1,569 @@
+/* Unit test of the solid main loop's model-free parts (solid_solver/): the lattice of
+ * a block, removed notches, region selection and flags, probes' nearest particle,
+ * prescribed load ramps, the cantilever-mode initial velocity (benchmarks S2), the
+ * semantic check of a case's geometry (through fsi_case_validate with a schema
+ * assembled here from the solid's key tables), velocity Verlet with gravity, damping
+ * and clamps (000 Eq. 55), and the interface load take. Exit 0 = pass; every failed
+ * check is printed. Scratch files go to $FSI_TEST_TMP/solid_geometry (default
+ * /tmp/fsi_test_solid_geometry). */
+#include <errno.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+
+#include "case_file.h"
+#include "dim.h"
+#include "geometry.h"
+#include "initial_velocity.h"
+#include "solid_integrate.h"
+#include "solid_interface.h"
+#include "solid_keys.h"
+#include "solid_loads.h"
+
+#include "unit_check.h"
+
+/* Vectors in case text: the z component only in 3D builds. */
+#if FSI_DIM == 2
+#define Z(v) ""
+#else
+#define Z(v) ", " #v
+#endif
+
+/* Number of z layers of the test blocks (z from 0 to 0.03 in 3D at dx = 0.01). */
+#if FSI_DIM == 2
+#define LAYERS 1
+#else
+#define LAYERS 3
+#endif
+
+static char scratch[512];
+
+static void make_scratch(void)
+{
+    const char *base = getenv("FSI_TEST_TMP");
+    snprintf(scratch, sizeof scratch, "%s/solid_geometry",
+             base && *base ? base : "/tmp/fsi_test_solid_geometry");
+    char path[512];
+    snprintf(path, sizeof path, "%s", scratch);
+    for (char *p = path + 1; *p; p++)
+        if (*p == '/') {
+            *p = '\0';
+            mkdir(path, 0755);
+            *p = '/';
+        }
+    if (mkdir(path, 0755) != 0 && errno != EEXIST) {
+        fprintf(stderr, "cannot create %s\n", path);
+        exit(1);
+    }
+}
+
+static const char *write_case(const char *name, const char *text)
+{
+    static char path[600];
+    snprintf(path, sizeof path, "%s/%s", scratch, name);
+    FILE *f = fopen(path, "w");
+    if (!f) {
+        fprintf(stderr, "cannot write %s\n", path);
+        exit(1);
+    }
+    fputs(text, f);
+    fclose(f);
+    return path;
+}
+
+/* ------------------------------------------------------------- the schema */
+
+static const fsi_key_spec run_keys[] = {
+    {"end_time", FSI_KEY_REAL, "s", NULL, FSI_BOUND_MIN_OPEN, 0, 0, NULL, "End."},
+};
+static const fsi_key_table run_table = {"run", "Run.", run_keys, 1};
+
+static const fsi_key_spec participant_keys[] = {
+    {"solver", FSI_KEY_STRING, "-", NULL, 0, 0, 0, NULL, "Solver."},
+    {"executable", FSI_KEY_STRING, "-", "", 0, 0, 0, NULL, "Program."},
+};
+static const fsi_key_table participant_table = {"participant", "Every participant.",
+                                                participant_keys, 2};
+
+/* Stands in for the material keys (solid_solver/materials), which this test does
+ * not need. */
+static const fsi_key_spec material_keys_here[] = {
+    {"density", FSI_KEY_REAL, "kg/m^3", NULL, FSI_BOUND_MIN_OPEN, 0, 0, NULL, "rho0."},
+};
+static const fsi_key_table material_table = {"material", "Material.", material_keys_here, 1};
+
+static const fsi_key_table *const solid_tables[] = {&fsi_solid_common_keys, &material_table};
+static const char *const roles[] = {"fluid", "solid"};
+
+static fsi_case_schema test_schema(fsi_solver_spec *solver)
+{
+    solver->name = "testsolid";
+    solver->role = "solid";
+    solver->executable = "fsi-solid-test";
+    solver->description = "Solid for the geometry test.";
+    solver->key_tables = solid_tables;
+    solver->n_key_tables = 2;
+    solver->objects = fsi_solid_object_kinds;
+    solver->n_objects = fsi_solid_n_object_kinds;
+    solver->check = solid_geometry_check;
+    fsi_case_schema s = {&run_table, 1, &participant_table, roles, 2, solver, 1};
+    return s;
+}
+
+/* Reads and validates; messages go to 'messages' (NUL-terminated). Returns the
+ * error count, -1 when the file could not be read; *out gets the case (or NULL). */
+static int load_case(const char *path, char *messages, size_t size, fsi_case **out)
+{
+    fsi_solver_spec solver;
+    fsi_case_schema schema = test_schema(&solver);
+    FILE *err = fmemopen(messages, size, "w");
+    fsi_case *c = fsi_case_read(path, err);
+    int n = -1;
+    if (c)
+        n = fsi_case_validate(c, &schema, err);
+    fclose(err);
+    messages[size - 1] = '\0';
+    if (out)
+        *out = c;
+    else if (c)
+        fsi_case_free(c);
+    return n;
+}
+
+/* ------------------------------------------------------------- geometry */
+
+static solid_block test_block(const char *section, double x0, double x1, double y0, double y1,
+                              double dx)
+{
+    solid_block b = {section, {0}, {0}, {0}};
+    double lo[3] = {x0, y0, 0.0}, hi[3] = {x1, y1, 0.03};
+    for (int d = 0; d < FSI_DIM; d++) {
+        b.min[d] = lo[d];
+        b.max[d] = hi[d];
+        b.count[d] = lround((hi[d] - lo[d]) / dx);
+    }
+    return b;
+}
+
+static solid_region test_region(const char *section, solid_region_action action, double x0,
+                                double x1, double y0, double y1)
+{
+    solid_region r = {section, action, {0}, {0}, {0}, 0.0};
+    double lo[3] = {x0, y0, -1.0}, hi[3] = {x1, y1, 1.0};
+    for (int d = 0; d < FSI_DIM; d++) {
+        r.min[d] = lo[d];
+        r.max[d] = hi[d];
+    }
+    return r;
+}
+
+static void test_lattice(void)
+{
+    const double dx = 0.01;
+    solid_block b = test_block("solid.block beam", 0.0, 1.0, 0.0, 0.2, dx);
+    CHECK(b.count[0] == 100 && b.count[1] == 20, "counts %ld x %ld, want 100 x 20", b.count[0],
+          b.count[1]);
+    CHECK(solid_block_points(&b) == 2000L * LAYERS, "points %ld", solid_block_points(&b));
+    double x[FSI_DIM];
+    solid_block_point(&b, dx, 0, x);
+    CHECK(fabs(x[0] - 0.005) < 1e-15 && fabs(x[1] - 0.005) < 1e-15,
+          "first point (%g, %g), want (0.005, 0.005)", x[0], x[1]);
+    solid_block_point(&b, dx, 99, x);
+    CHECK(fabs(x[0] - 0.995) < 1e-14 && fabs(x[1] - 0.005) < 1e-15,
+          "point 99 (%g, %g), want (0.995, 0.005): x varies fastest", x[0], x[1]);
+    solid_block_point(&b, dx, 100, x);
+    CHECK(fabs(x[0] - 0.005) < 1e-15 && fabs(x[1] - 0.015) < 1e-15,
+          "point 100 (%g, %g), want (0.005, 0.015)", x[0], x[1]);
+    solid_block_point(&b, dx, 1999, x);
+    CHECK(fabs(x[0] - 0.995) < 1e-14 && fabs(x[1] - 0.195) < 1e-14,
+          "point 1999 (%g, %g), want (0.995, 0.195)", x[0], x[1]);
+    CHECK(fabs(solid_block_spacings(&b, dx, 0) - 100.0) < 1e-9, "block length in spacings");
+
+    /* Total volume equals the block's: L / dx points of dx^DIM each. */
+    solid_geometry g = {dx, 1, 0, 0, &b, NULL, NULL};
+    solid_particles p;
+    char msg[256];
+    CHECK(solid_geometry_build(&g, 2400.0, &p, msg, sizeof msg) == 0, "build: %s", msg);
+    double volume = 0.0;
+    for (int i = 0; i < p.n; i++)
+        volume += p.volume[i];
+    double want = 0.2 * (FSI_DIM == 3 ? 0.03 : 1.0);
+    CHECK(fabs(volume - want) < 1e-12, "volume %.15g, want %.15g", volume, want);
+    CHECK(p.density[7] == 2400.0 && p.block[7] == 0 && p.id[7] == 7, "density, block, id");
+    CHECK(p.x[3] == p.x0[3] && p.v[3] == 0.0 && p.a[3] == 0.0, "x = x0, at rest");
+    solid_particles_free(&p);
+
+    /* Overlap: touching blocks do not overlap, intersecting ones do. */
+    solid_block right = test_block("solid.block right", 1.0, 1.5, 0.0, 0.2, dx);
+    solid_block cross = test_block("solid.block cross", 0.9, 1.2, 0.1, 0.3, dx);
+    CHECK(solid_blocks_overlap(&b, &right) <= 0.0, "touching blocks overlap by %g",
+          solid_blocks_overlap(&b, &right));
+    /* x 0.9..1, y 0.1..0.2 (and z 0..0.03 in 3D): the narrowest side */
+    double want_width = FSI_DIM == 3 ? 0.03 : 0.1;
+    CHECK(fabs(solid_blocks_overlap(&b, &cross) - want_width) < 1e-12,
+          "overlap width %g, want %g", solid_blocks_overlap(&b, &cross), want_width);
+}
+
+static void test_regions(void)
+{
+    const double dx = 0.01;
+    solid_block b = test_block("solid.block beam", 0.0, 1.0, 0.0, 0.2, dx);
+    solid_region r[4] = {
+        /* a notch: two columns (x = 0.495, 0.505), five rows (y < 0.05) */
+        test_region("solid.region notch", SOLID_REGION_REMOVE, 0.49, 0.51, 0.0, 0.05),
+        /* clamp: the two leftmost columns; its face x = 0.02 lies between points */
+        test_region("solid.region clamp", SOLID_REGION_CLAMP, -1.0, 0.02, -1.0, 1.0),
+        /* load: the last column, selected by a box whose faces lie on the lattice */
+        test_region("solid.region tip", SOLID_REGION_LOAD, 0.99, 1.0, 0.0, 0.2),
+        /* a load box drawn exactly through a column of points: closed box selects it */
+        test_region("solid.region line", SOLID_REGION_LOAD, 0.505, 0.505, 0.0, 0.2),
+    };
+    r[2].force[1] = -100.0;
+    r[2].ramp_time = 0.5;
+    r[3].force[0] = 30.0;
+    solid_geometry g = {dx, 1, 4, 0, &b, r, NULL};
+    solid_particles p;
+    char msg[256];
+    CHECK(solid_geometry_build(&g, 1000.0, &p, msg, sizeof msg) == 0, "build: %s", msg);
+    CHECK(p.n == (2000 - 10) * LAYERS, "notched beam has %d points, want %d", p.n,
+          (2000 - 10) * LAYERS);
+    int in_notch = 0, clamped = 0, loaded = 0, ids_ok = 1;
+    for (int i = 0; i < p.n; i++) {
+        in_notch += solid_region_contains(&r[0], dx, &p.x0[i * FSI_DIM]);
+        clamped += (p.flags[i] & SOLID_CLAMPED) != 0;
+        loaded += (p.flags[i] & SOLID_LOADED) != 0;
+        ids_ok &= p.id[i] == i;
+    }
+    CHECK(in_notch == 0, "%d points created inside the removed notch", in_notch);
+    CHECK(ids_ok, "ids are not the indices 0..n-1");
+    CHECK(clamped == 40 * LAYERS, "%d clamped, want %d", clamped, 40 * LAYERS);
+    CHECK(solid_region_select(&g, 1, &p, NULL) == 40 * LAYERS, "clamp selects %d",
+          solid_region_select(&g, 1, &p, NULL));
+    CHECK(solid_region_select(&g, 2, &p, NULL) == 20 * LAYERS, "tip selects %d",
+          solid_region_select(&g, 2, &p, NULL));
+    /* the line at x = 0.505 lost its 5 notch points */
+    CHECK(solid_region_select(&g, 3, &p, NULL) == 15 * LAYERS, "line selects %d, want %d",
+          solid_region_select(&g, 3, &p, NULL), 15 * LAYERS);
+    CHECK(loaded == 35 * LAYERS, "%d loaded, want %d", loaded, 35 * LAYERS);
+
+    /* Loads: equal shares, linear ramp, then hold. */
+    solid_loads l;
+    CHECK(solid_loads_init(&l, &g, &p, msg, sizeof msg) == 0, "loads: %s", msg);
+    CHECK(l.n_regions == 2 && l.regions[0].n == 20 * LAYERS, "load regions %d", l.n_regions);
+    double total[FSI_DIM];
+    solid_loads_total(&l, 0.25, total);
+    CHECK(fabs(total[1] + 50.0) < 1e-12 && fabs(total[0] - 30.0) < 1e-12,
+          "total at half ramp (%g, %g), want (30, -50)", total[0], total[1]);
+    solid_loads_total(&l, 2.0, total);
+    CHECK(fabs(total[1] + 100.0) < 1e-12, "total after the ramp %g, want -100", total[1]);
+    CHECK(solid_load_ramp(-1.0, 0.5) == 0.0 && solid_load_ramp(0.1, 0.0) == 1.0,
+          "ramp before 0 and without ramp");
+    double *force = calloc((size_t)p.n * FSI_DIM, sizeof *force);
+    solid_loads_add(&l, 1.0, force);
+    double sum = 0.0;
+    for (int i = 0; i < p.n; i++)
+        sum += force[i * FSI_DIM + 1];
+    CHECK(fabs(sum + 100.0) < 1e-10, "spread load sums to %g, want -100", sum);
+    free(force);
+    solid_loads_free(&l);
+
+    /* Probes: the nearest particle. */
+    double tip[FSI_DIM] = {1.0, 0.097};
+    double dist;
+    int i = solid_nearest_particle(&p, tip, &dist);
+    CHECK(i >= 0 && fabs(p.x0[i * FSI_DIM] - 0.995) < 1e-12 &&
+              fabs(p.x0[i * FSI_DIM + 1] - 0.095) < 1e-12,
+          "nearest to (1, 0.097) is (%g, %g), want (0.995, 0.095)", p.x0[i * FSI_DIM],
+          p.x0[i * FSI_DIM + 1]);
+    double want_dist = sqrt(0.005 * 0.005 * (FSI_DIM - 1) + 0.002 * 0.002);
+    CHECK(fabs(dist - want_dist) < 1e-12, "distance %g, want %g", dist, want_dist);
+    solid_particles_free(&p);
+}
+
+/* ------------------------------------------------------------- mode shape */
+
+/* 004 Eq. 25's form of the same first mode, normalised to 1 at x = L. */
+static double mode_004(double x, double length)
+{
+    double kl = SOLID_MODE_KL, k = kl / length;
+    double m = sin(kl) + sinh(kl), n = cos(kl) + cosh(kl);
+    double q = 2.0 * (cos(kl) * sinh(kl) - sin(kl) * cosh(kl));
+    return (m * (cos(k * x) - cosh(k * x)) - n * (sin(k * x) - sinh(k * x))) / q;
+}
+
+static void test_mode_shape(void)
+{
+    const double length = 0.2;
+    CHECK(fabs(solid_cantilever_mode(length, length) - 1.0) < 1e-15, "f(L)/f(L) = %.17g",
+          solid_cantilever_mode(length, length));
+    CHECK(solid_cantilever_mode(0.0, length) == 0.0 && solid_cantilever_mode(-0.01, length) == 0.0,
+          "at rest at and behind the clamp");
+    double worst = 0.0;
+    for (int j = 0; j <= 100; j++) {
+        double x = length * j / 100.0;
+        worst = fmax(worst, fabs(solid_cantilever_mode(x, length) - mode_004(x, length)));
+    }
+    /* Gray's and 004's forms agree exactly at the root kL = 1.8751; at the rounded
+     * 1.875 they differ by O(1e-4). */
+    CHECK(worst < 1e-3, "Gray's and 004's first mode differ by %g", worst);
+
+    /* The field from a case: S2's plate, a point placed exactly at x = L. */
+    char messages[4096];
+    const char *path = write_case(
+        "mode.ini",
+        "[run]\nend_time = 1\n"
+        "[solid]\nsolver = testsolid\nspacing = 0.001\ndensity = 1000\n"
+        "initial_velocity = cantilever_mode\nmode_amplitude = 0.01\nmode_length = 0.2\n"
+        "mode_origin = 0\n"
+        "[solid.block plate]\nmin = -0.003, 0" Z(0) "\nmax = 0.2, 0.02" Z(0.001) "\n");
+    fsi_case *c = NULL;
+    int n = load_case(path, messages, sizeof messages, &c);
+    CHECK(n == 0, "mode case: %d errors:\n%s", n, messages);
+    if (!c)
+        return;
+    double x0[4 * FSI_DIM] = {0};
+    double v[4 * FSI_DIM] = {0};
+    double xs[4] = {0.2, 0.1, -0.002, 0.05};
+    uint8_t flags[4] = {0, 0, 0, SOLID_CLAMPED};
+    for (int i = 0; i < 4; i++)
+        x0[i * FSI_DIM] = xs[i];
+    solid_particles p = {0};
+    p.n = 4;
+    p.x0 = x0;
+    p.v = v;
+    p.flags = flags;
+    const double c0 = sqrt(3.25e6 / 1000.0);   /* S2: sqrt(K / rho) */
+    char msg[256];
+    CHECK(solid_initial_velocity(c, "solid", c0, &p, msg, sizeof msg) == 0, "%s", msg);
+    CHECK(fabs(v[1] - 0.01 * c0) <= 4 * 2.2e-16 * 0.01 * c0,
+          "vy(L) = %.17g, want V0 c0 = %.17g", v[1], 0.01 * c0);
+    CHECK(v[FSI_DIM + 1] > 0.0 && v[FSI_DIM + 1] < v[1], "vy(L/2) = %g", v[FSI_DIM + 1]);
+    CHECK(v[2 * FSI_DIM + 1] == 0.0 && v[3 * FSI_DIM + 1] == 0.0,
+          "clamp layer and clamped points start at rest");
+    CHECK(v[0] == 0.0, "no velocity along x");
+    fsi_case_free(c);
+}
+
+/* ------------------------------------------------------------- the check */
+
+static int contains(const char *text, const char *part)
+{
+    return strstr(text, part) != NULL;
+}
+
+static void test_check(void)
+{
+    char messages[8192];
+    const char *good = write_case(
+        "good.ini",
+        "[run]\nend_time = 1\n"
+        "[solid]\nsolver = testsolid\nspacing = 0.01\ndensity = 2400\n"
+        "[solid.block clamp]\nmin = -0.03, 0" Z(0) "\nmax = 0, 0.2" Z(0.03) "\n"
+        "[solid.block beam]\nmin = 0, 0" Z(0) "\nmax = 1, 0.2" Z(0.03) "\n"
+        "[solid.region fixed]\nmin = -1, -1" Z(-1) "\nmax = 0, 1" Z(1) "\naction = clamp\n"
+        "[solid.region notch]\nmin = 0.49, 0" Z(-1) "\nmax = 0.51, 0.05" Z(1) "\n"
+        "action = remove\n"
+        "[solid.region tip]\nmin = 0.99, 0" Z(-1) "\nmax = 1, 0.2" Z(1) "\naction = load\n"
+        "force = 0, -85000" Z(0) "\nramp_time = 0.03\n"
+        "[solid.probe tip]\npoint = 1, 0.1" Z(0.015) "\n");
+    int n = load_case(good, messages, sizeof messages, NULL);
+    CHECK(n == 0, "valid case: %d errors:\n%s", n, messages);
+
+    const char *bad = write_case(
+        "bad.ini",
+        "[run]\nend_time = 1\n"                                               /* 1-2 */
+        "[solid]\nsolver = testsolid\nspacing = 0.01\ndensity = 2400\n"       /* 3-6 */
+        "initial_velocity = cantilever_mode\n"                                /* 7 */
+        "[solid.block beam]\nmin = 0, 0" Z(0) "\nmax = 1, 0.2" Z(0.03) "\n"  /* 8-10 */
+        "[solid.block cross]\nmin = 0.9, 0.1" Z(0) "\n"                      /* 11-12 */
+        "max = 1.2, 0.3" Z(0.03) "\n"                                         /* 13 */
+        "[solid.block odd]\nmin = 2, 0" Z(0) "\nmax = 2.5, 0.0833" Z(0.03) "\n" /* 14-16 */
+        "[solid.block thin]\nmin = 3, 0" Z(0) "\nmax = 4, 0.005" Z(0.03) "\n" /* 17-19 */
+        "[solid.region nowhere]\nmin = 5, 5" Z(-1) "\nmax = 6, 6" Z(1) "\n"  /* 20-22 */
+        "action = clamp\nforce = 1, 1" Z(0) "\n"                              /* 23-24 */
+        "[solid.region push]\nmin = 0.99, 0" Z(-1) "\nmax = 1, 0.2" Z(1) "\n" /* 25-27 */
+        "action = load\n"                                                     /* 28 */
+        "[solid.probe far]\npoint = 1.5, 0.1" Z(0.015) "\n");                 /* 29-30 */
+    n = load_case(bad, messages, sizeof messages, NULL);
+    /* cross overlaps beam; odd is 8.33 spacings high; thin is thinner than a spacing;
+     * nowhere carries a force; push has none; mode without mode_length. Counting
+     * (nowhere selects nothing, far is off the solid) waits for these to be fixed. */
+    CHECK(n == 6, "bad case: %d errors, want 6:\n%s", n, messages);
+    CHECK(contains(messages, "bad.ini:11: [solid.block cross]: overlaps [solid.block beam] "),
+          "overlap not reported at the block's header:\n%s", messages);
+    CHECK(contains(messages, "bad.ini:16: [solid.block odd] max: the block is 8.33 spacings "
+                             "long along y"),
+          "odd block not reported:\n%s", messages);
+    CHECK(contains(messages, "use max = 0.08 or 0.09 along y, or spacing = "),
+          "odd block: no fitting sizes proposed:\n%s", messages);
+    CHECK(contains(messages, "bad.ini:19: [solid.block thin] max: ") &&
+              contains(messages, "thinner than one spacing"),
+          "thin block not reported:\n%s", messages);
+    CHECK(contains(messages, "bad.ini:24: [solid.region nowhere] force: only a region with "
+                             "action = load"),
+          "force on a clamp not reported:\n%s", messages);
+    CHECK(contains(messages, "bad.ini:25: [solid.region push] force: action = load needs"),
+          "load without force not reported at the header:\n%s", messages);
+    CHECK(contains(messages, "bad.ini:3: [solid] mode_length: "),
+          "missing mode_length not reported:\n%s", messages);
+
+    const char *empty = write_case(
+        "empty.ini",
+        "[run]\nend_time = 1\n"                                               /* 1-2 */
+        "[solid]\nsolver = testsolid\nspacing = 0.01\ndensity = 2400\n"       /* 3-6 */
+        "[solid.block beam]\nmin = 0, 0" Z(0) "\nmax = 1, 0.2" Z(0.03) "\n"  /* 7-9 */
+        "[solid.region nowhere]\nmin = 5, 5" Z(-1) "\nmax = 6, 6" Z(1) "\n"  /* 10-12 */
+        "action = clamp\n"                                                    /* 13 */
+        "[solid.region between]\nmin = 0.306, 0" Z(-1) "\n"                   /* 14-15 */
+        "max = 0.314, 0.2" Z(1) "\naction = remove\n"                         /* 16-17 */
+        "[solid.probe far]\npoint = 1.5, 0.1" Z(0.015) "\n");                 /* 18-19 */
+    n = load_case(empty, messages, sizeof messages, NULL);
+    CHECK(n == 3, "empty selections: %d errors, want 3:\n%s", n, messages);
+    CHECK(contains(messages, "empty.ini:10: [solid.region nowhere]: selects no particle"),
+          "empty region not reported:\n%s", messages);
+    CHECK(contains(messages, "empty.ini:14: [solid.region between]: removes no particle"),
+          "remove region between the points not reported:\n%s", messages);
+    CHECK(contains(messages, "empty.ini:19: [solid.probe far] point: is 0.505"),
+          "probe off the solid not reported:\n%s", messages);
+
+    /* Too fine a lattice is refused before anything walks it. */
+    const char *huge = write_case(
+        "huge.ini",
+        "[run]\nend_time = 1\n"
+        "[solid]\nsolver = testsolid\nspacing = 1e-6\ndensity = 2400\n"      /* 3-6 */
+        "[solid.block beam]\nmin = 0, 0" Z(0) "\nmax = 1, 0.2" Z(0.03) "\n");
+    n = load_case(huge, messages, sizeof messages, NULL);
+    CHECK(n == 1 && contains(messages, "huge.ini:5: [solid] spacing: the blocks would hold "),
+          "too many points: %d errors:\n%s", n, messages);
+}
+
+/* ------------------------------------------------------------- integration */
+
+static void test_integration(void)
+{
+    /* Two points: 0 free, 1 clamped; no internal force. */
+    double x0[2 * FSI_DIM] = {0}, x[2 * FSI_DIM] = {0}, v[2 * FSI_DIM] = {0},
+           a[2 * FSI_DIM] = {0}, xp[2 * FSI_DIM] = {0};
+    double vol[2] = {1e-4, 1e-4}, rho[2] = {1000.0, 1000.0};
+    int32_t id[2] = {0, 1}, blk[2] = {0, 0};
+    uint8_t flags[2] = {0, SOLID_CLAMPED};
+    x0[FSI_DIM] = 1.0;
+    memcpy(x, x0, sizeof x);
+    solid_particles p = {2, 0.01, id, x0, x, v, a, vol, rho, flags, blk};
+    double zero[2 * FSI_DIM] = {0};
+    solid_forces f = {zero, zero, zero};
+    solid_integrator in = {0.0, {0.0, -9.81}, 0.01};
+
+    /* Free fall: Verlet is exact for constant acceleration. */
+    solid_acceleration(&p, &f, &in);
+    const double h = 1e-3;
+    double work = 0.0;
+    solid_fault fault;
+    int rc = 0;
+    for (int s = 0; s < 40; s++) {
+        solid_verlet_drift(&p, h, xp);
+        rc |= solid_verlet_kick(&p, &f, h, &in, xp, &work, &fault);
+    }
+    double t = 40 * h, want = -0.5 * 9.81 * t * t;
+    CHECK(rc == 0, "free fall reported a fault: %s", fault.what);
+    CHECK(fabs(x[1] - want) < 1e-15, "free fall y = %.17g, want %.17g", x[1], want);
+    CHECK(fabs(v[1] + 9.81 * t) < 1e-14, "free fall vy = %g", v[1]);
+    CHECK(x[FSI_DIM] == 1.0 && x[FSI_DIM + 1] == 0.0 && v[FSI_DIM + 1] == 0.0 &&
+              a[FSI_DIM + 1] == 0.0,
+          "clamped point moved");
+    /* Work of gravity = m g h = kinetic energy gained. */
+    double m = 0.1;
+    CHECK(fabs(work - m * 9.81 * (-want)) < 1e-12, "gravity work %.15g, want %.15g", work,
+          m * 9.81 * (-want));
+    CHECK(fabs(solid_kinetic_energy(&p) - work) < 1e-12, "kinetic %.15g != work %.15g",
+          solid_kinetic_energy(&p), work);
+
+    /* Damping: the implicit update tends to the terminal velocity g / c even for c h > 2. */
+    in.damping = 5000.0;
+    for (int s = 0; s < 200; s++) {
+        solid_verlet_drift(&p, h, xp);
+        solid_verlet_kick(&p, &f, h, &in, xp, &work, &fault);
+    }
+    CHECK(fabs(v[1] + 9.81 / 5000.0) < 1e-12, "terminal vy = %.15g, want %.15g", v[1],
+          -9.81 / 5000.0);
+
+    /* Health: a non-finite force and a jump farther than max_step. */
+    double bad[2 * FSI_DIM] = {0};
+    bad[0] = NAN;
+    solid_forces fb = {bad, zero, zero};
+    solid_verlet_drift(&p, h, xp);
+    CHECK(solid_verlet_kick(&p, &fb, h, &in, xp, &work, &fault) == -1 && fault.particle == 0 &&
+              contains(fault.what, "not finite"),
+          "NaN force not caught: %d %s", fault.particle, fault.what);
+    x[0] = x[1] = 0.0;
+    v[0] = v[1] = a[0] = a[1] = 0.0;
+    in.damping = 0.0;
+    v[0] = 20.0;    /* 0.02 m in one 1e-3 s step, two spacings */
+    solid_verlet_drift(&p, h, xp);
+    CHECK(solid_verlet_kick(&p, &f, h, &in, xp, &work, &fault) == -1 && fault.particle == 0 &&
+              contains(fault.what, "moved"),
+          "jump not caught: %d %s", fault.particle, fault.what);
+}
+
+/* ------------------------------------------------------------- interface */
+
+static void test_interface(void)
+{
+    double x0[3 * FSI_DIM] = {0}, x[3 * FSI_DIM] = {0}, v[3 * FSI_DIM] = {0},
+           a[3 * FSI_DIM] = {0};
+    double vol[3] = {1, 2, 3}, rho[3] = {1, 1, 1};
+    int32_t id[3] = {0, 1, 2}, blk[3] = {0, 0, 0};
+    uint8_t flags[3] = {0};
+    for (int i = 0; i < 3; i++)
+        x[i * FSI_DIM] = i;
+    solid_particles p = {3, 1.0, id, x0, x, v, a, vol, rho, flags, blk};
+    solid_interface_buffers b;
+    CHECK(solid_interface_init(&b, 3) == 0, "init");
+    b.surface[0] = b.surface[2] = 1;
+    CHECK(solid_interface_gather(&b, &p) == 2 && b.state.id[1] == 2 &&
+              b.state.position[FSI_DIM] == 2.0 && b.state.volume[1] == 3.0,
+          "gather");
+    double force[3 * FSI_DIM], pressure[3];
+    int32_t ids[2] = {2, 0};
+    double f[2 * FSI_DIM] = {0}, pr[2] = {5.0, 6.0};
+    f[1] = -1.0;
+    f[FSI_DIM + 1] = -2.0;
+    fsi_interface in = {2, ids, NULL, NULL, NULL, NULL, pr, f};
+    char msg[256] = "";
+    CHECK(solid_interface_take(&b, &in, &p, force, pressure, msg, sizeof msg) == 0, "%s", msg);
+    CHECK(force[2 * FSI_DIM + 1] == -1.0 && force[1] == -2.0 && force[FSI_DIM + 1] == 0.0 &&
+              pressure[2] == 5.0,
+          "loads by id");
+    ids[1] = 1;   /* not sent */
+    CHECK(solid_interface_take(&b, &in, &p, force, pressure, msg, sizeof msg) == -1 &&
+              contains(msg, "id 1, which was not sent"),
+          "load for an unsent id: %s", msg);
+    ids[1] = 7;   /* unknown */
+    CHECK(solid_interface_take(&b, &in, &p, force, pressure, msg, sizeof msg) == -1 &&
+              contains(msg, "id 7, which does not exist"),
+          "load for an unknown id: %s", msg);
+    ids[1] = 2;   /* duplicate */
+    CHECK(solid_interface_take(&b, &in, &p, force, pressure, msg, sizeof msg) == -1 &&
+              contains(msg, "two loads for particle id 2"),
+          "duplicate load: %s", msg);
+    solid_interface_free(&b);
+}
+
+int main(void)
+{
+    make_scratch();
+    test_lattice();
+    test_regions();
+    test_mode_shape();
+    test_check();
+    test_integration();
+    test_interface();
+    if (failures) {
+        fprintf(stderr, "test_solid_geometry: %d of %d checks failed\n", failures, checks);
+        return 1;
+    }
+    printf("test_solid_geometry: all %d checks passed\n", checks);
+    return 0;
+}
