@@ -16,7 +16,7 @@
 # Frames every 1 us in the failure run: the crack runs at about 1 mm/us, so a frame
 # interval of one spacing's travel is what lets the first crack points be seen while the
 # crack is still within 2 spacings of the tip (with 5 us frames the crack is several
-# spacings long when first seen). Both runs take about 7 s together on one core.
+# spacings long when first seen). Both runs take about 6 s together on an idle machine.
 source "$(dirname "$0")/lib.sh"
 case_file="$FSI_SOURCE_DIR/cases/s4_notched_plate.ini"
 check="$FSI_SOURCE_DIR/tests/system/fracture_check.py"
