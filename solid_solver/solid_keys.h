@@ -19,6 +19,11 @@
  * mode_amplitude, mode_length, mode_origin, energy_growth_limit. */
 extern const fsi_key_table fsi_solid_common_keys;
 
+/* Upper bound of time_step_safety. Values in (1, max] run past the model's estimated
+ * stable step on purpose (the main loop warns); the bound only keeps typos such as
+ * 80 for 0.8 out. */
+#define SOLID_TIME_STEP_SAFETY_MAX 4.0
+
 /* Keys of the object sections [solid.block NAME], [solid.region NAME],
  * [solid.probe NAME]. */
 extern const fsi_key_table fsi_solid_block_keys;

@@ -213,6 +213,13 @@ static int setup(solid_run *s, fsi_participant *part)
              "stable step %g s (sub-step %g s), c0 = sqrt(K/rho) = %g m/s",
              p->n, s->geometry.n_blocks, clamped, loaded, p->spacing, mass, stable,
              s->safety * stable, c0);
+    /* Allowed (solid_keys.c) so that a stability limit can be probed, but nothing
+     * guarantees a stable integration there: say so before the run, so that a later
+     * "unstable" stop is not a surprise. */
+    if (s->safety > 1.0)
+        fsi_warn("time_step_safety = %g is beyond the estimated stable step (sub-steps "
+                 "up to %g s, stable step %g s): the run may go unstable", s->safety,
+                 s->safety * stable, stable);
     return 0;
 }
 
@@ -281,8 +288,16 @@ static int advance(solid_run *s, double t0, double dt, int window)
         int rc = solid_model_internal_force(s->model, p, s->x_prev, h, t, s->f_int, s->msg,
                                             sizeof s->msg);
         fsi_timer_stop(&s->timers, s->t_force);
-        if (rc != 0)
+        if (rc != 0) {
+            /* The model names the point, its position and t; add the window and the
+             * sub-step, as the integrator's and the energy check's messages do, so
+             * every "unstable" stop can be placed in the same schedule. */
+            size_t len = strlen(s->msg);
+            if (len + 1 < sizeof s->msg)
+                snprintf(s->msg + len, sizeof s->msg - len, " (window %d, sub-step %ld of "
+                         "%ld)", window, j + 1, n);
             return -1;
+        }
 
         fsi_timer_start(&s->timers, s->t_integrate);
         double *swap = s->f_ext_prev;
