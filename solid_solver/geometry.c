@@ -79,6 +79,10 @@ int solid_geometry_read(solid_geometry *g, const fsi_case *c, const char *role, 
         read_vector(c, r->section, "max", r->max);
         read_vector(c, r->section, "force", r->force);
         r->ramp_time = fsi_case_get_real(c, r->section, "ramp_time", 0.0);
+        const char *face = fsi_case_get(c, r->section, "clamp_face");
+        r->clamp_face = face ? solid_clamp_face_parse(face) : -1;
+        if (r->clamp_face < -1)
+            r->clamp_face = -1;     /* refused by the check; an unchecked case gets none */
     }
     g->n_probes = np;
     for (int i = 0; i < np; i++) {
@@ -168,6 +172,7 @@ void solid_particles_free(solid_particles *p)
     free(p->density);
     free(p->flags);
     free(p->block);
+    free(p->mirror);
     memset(p, 0, sizeof *p);
 }
 
@@ -183,6 +188,7 @@ static int particles_alloc(solid_particles *p, long n)
     p->density = malloc(un * sizeof *p->density);
     p->flags = calloc(un, sizeof *p->flags);
     p->block = malloc(un * sizeof *p->block);
+    p->mirror = NULL;
     if (!p->id || !p->x0 || !p->x || !p->v || !p->a || !p->volume || !p->density ||
         !p->flags || !p->block) {
         solid_particles_free(p);
@@ -203,8 +209,63 @@ double solid_geometry_lattice_size(const solid_geometry *g)
     return n;
 }
 
+static const char *const clamp_face_words[] = {"x_min", "x_max", "y_min", "y_max",
+                                                "z_min", "z_max"};
+
+int solid_clamp_face_parse(const char *word)
+{
+    if (strcmp(word, "none") == 0)
+        return -1;
+    for (int k = 0; k < 2 * FSI_DIM; k++)
+        if (strcmp(word, clamp_face_words[k]) == 0)
+            return k;
+    return -2;
+}
+
+/* Pairs the points of mirror clamp regions with their images across the clamp face
+ * (x_image = 2 plane - x along the face's axis). Returns how many found none, or -1
+ * when memory runs out. */
+static int pair_mirrored_points(const solid_geometry *g, solid_particles *p)
+{
+    int any = 0;
+    for (int r = 0; r < g->n_regions; r++)
+        any |= g->regions[r].action == SOLID_REGION_CLAMP && g->regions[r].clamp_face >= 0;
+    if (!any)
+        return 0;
+    p->mirror = malloc((size_t)p->n * sizeof *p->mirror);
+    if (!p->mirror)
+        return -1;
+    int unpaired = 0;
+    for (int i = 0; i < p->n; i++) {
+        p->mirror[i] = -1;
+        if (!(p->flags[i] & SOLID_CLAMPED))
+            continue;
+        for (int r = 0; r < g->n_regions && p->mirror[i] < 0; r++) {
+            const solid_region *reg = &g->regions[r];
+            if (reg->action != SOLID_REGION_CLAMP || reg->clamp_face < 0 ||
+                !solid_region_contains(reg, g->spacing, &p->x0[i * FSI_DIM]))
+                continue;
+            const int axis = reg->clamp_face / 2;
+            const double plane = reg->clamp_face % 2 ? reg->max[axis] : reg->min[axis];
+            double image[FSI_DIM], dist;
+            for (int d = 0; d < FSI_DIM; d++)
+                image[d] = p->x0[i * FSI_DIM + d];
+            image[axis] = 2.0 * plane - image[axis];
+            const int m = solid_nearest_particle(p, image, &dist);
+            if (m >= 0 && dist <= SOLID_GEOMETRY_TOL * g->spacing &&
+                !(p->flags[m] & SOLID_CLAMPED)) {
+                p->mirror[i] = m;
+                p->flags[i] |= SOLID_MIRRORED;
+            } else {
+                unpaired++;
+            }
+        }
+    }
+    return unpaired;
+}
+
 int solid_geometry_build(const solid_geometry *g, double density, solid_particles *p,
-                         char *msg, size_t msg_size)
+                         int *n_unmirrored, char *msg, size_t msg_size)
 {
     memset(p, 0, sizeof *p);
     double x[FSI_DIM];
@@ -256,6 +317,14 @@ int solid_geometry_build(const solid_geometry *g, double density, solid_particle
             i++;
         }
     }
+    const int unpaired = pair_mirrored_points(g, p);
+    if (unpaired < 0) {
+        solid_particles_free(p);
+        snprintf(msg, msg_size, "out of memory for the mirror clamp of %d particles", p->n);
+        return -1;
+    }
+    if (n_unmirrored)
+        *n_unmirrored = unpaired;
     return 0;
 }
 

@@ -44,6 +44,9 @@ typedef struct {
     double min[FSI_DIM], max[FSI_DIM];
     double force[FSI_DIM];      /* load: total force [N, per unit thickness in 2D] */
     double ramp_time;           /* load: linear ramp from 0 over this time [s] */
+    /* clamp: the face of the box the body touches, as axis * 2 + (0 for min, 1 for
+     * max), or -1 for none (the points stay at x0) */
+    int clamp_face;
 } solid_region;
 
 typedef struct {
@@ -91,10 +94,17 @@ double solid_geometry_lattice_size(const solid_geometry *g);
 /* Creates the particles: every lattice point of every block outside the remove
  * regions, id = index, x = x0, v = a = 0, volume dx^FSI_DIM, the given reference
  * density, block index, and flags SOLID_CLAMPED / SOLID_LOADED from the clamp and
- * load regions. Returns 0, or -1 with a message (no points, more than SOLID_MAX_LATTICE,
- * out of memory). */
+ * load regions. A point of a clamp region with a clamp_face whose mirror image across
+ * that face is an unclamped particle becomes SOLID_MIRRORED with p->mirror set; one
+ * without such an image stays an ordinary clamped point (*n_unmirrored counts them
+ * when the pointer is not NULL). Returns 0, or -1 with a message (no points, more
+ * than SOLID_MAX_LATTICE, out of memory). */
 int solid_geometry_build(const solid_geometry *g, double density, solid_particles *p,
-                         char *msg, size_t msg_size);
+                         int *n_unmirrored, char *msg, size_t msg_size);
+
+/* The words of clamp_face in the order of solid_region.clamp_face (x_min, x_max,
+ * y_min, ...); index -1 is "none". Returns the index, or -2 for an unknown word. */
+int solid_clamp_face_parse(const char *word);
 void solid_particles_free(solid_particles *p);
 
 /* Indices of the particles in region r (in index order) into 'index' when it is

@@ -118,6 +118,15 @@ static void check_regions(checker *k, const solid_geometry *g)
                 problem(k, reg->section, "ramp_time", "only a region with action = load takes "
                         "a ramp_time (this one has action = %s)", action_word[reg->action]);
         }
+        const char *face = fsi_case_get(k->c, reg->section, "clamp_face");
+        if (given(k->c, reg->section, "clamp_face") && face) {
+            if (reg->action != SOLID_REGION_CLAMP)
+                problem(k, reg->section, "clamp_face", "only a region with action = clamp takes "
+                        "a clamp_face (this one has action = %s)", action_word[reg->action]);
+            else if (solid_clamp_face_parse(face) < -1)
+                problem(k, reg->section, "clamp_face", "'%s' names an axis this %dD build does "
+                        "not have", face, FSI_DIM);
+        }
     }
 }
 

@@ -9,6 +9,44 @@ static double mass_of(const solid_particles *p, int i)
     return p->density[i] * p->volume[i];
 }
 
+/* x, v, a of every mirrored point from its partner's (solid_integrate.h). */
+static void follow_partners(solid_particles *p)
+{
+    if (!p->mirror)
+        return;
+    for (int i = 0; i < p->n; i++) {
+        const int m = p->mirror[i];
+        if (m < 0)
+            continue;
+        for (int d = 0; d < FSI_DIM; d++) {
+            const int k = i * FSI_DIM + d, km = m * FSI_DIM + d;
+            p->x[k] = p->x0[k] - (p->x[km] - p->x0[km]);
+            p->v[k] = -p->v[km];
+            p->a[k] = -p->a[km];
+        }
+    }
+}
+
+void solid_mirror_forces(const solid_particles *p, double *internal)
+{
+    if (!p->mirror)
+        return;
+    for (int i = 0; i < p->n; i++) {
+        const int m = p->mirror[i];
+        if (m < 0)
+            continue;
+        for (int d = 0; d < FSI_DIM; d++) {
+            internal[m * FSI_DIM + d] -= internal[i * FSI_DIM + d];
+            internal[i * FSI_DIM + d] = 0.0;
+        }
+    }
+}
+
+static int is_material(const solid_particles *p, int i)
+{
+    return !(p->flags[i] & SOLID_MIRRORED);
+}
+
 void solid_acceleration(solid_particles *p, const solid_forces *f, const solid_integrator *in)
 {
     for (int i = 0; i < p->n; i++) {
@@ -25,6 +63,7 @@ void solid_acceleration(solid_particles *p, const solid_forces *f, const solid_i
                    in->damping * p->v[k];
         }
     }
+    follow_partners(p);
 }
 
 void solid_verlet_drift(solid_particles *p, double h, double *x_prev)
@@ -43,6 +82,7 @@ void solid_verlet_drift(solid_particles *p, double h, double *x_prev)
             p->x[k] += h * p->v[k];
         }
     }
+    follow_partners(p);
 }
 
 int solid_verlet_kick(solid_particles *p, const solid_forces *f, double h,
@@ -89,6 +129,7 @@ int solid_verlet_kick(solid_particles *p, const solid_forces *f, double h,
                          h, in->max_step);
         }
     }
+    follow_partners(p);
     *work += dw;
     fault->particle = bad;
     return bad < 0 ? 0 : -1;
@@ -101,7 +142,7 @@ double solid_kinetic_energy(const solid_particles *p)
         double v2 = 0.0;
         for (int d = 0; d < FSI_DIM; d++)
             v2 += p->v[i * FSI_DIM + d] * p->v[i * FSI_DIM + d];
-        e += 0.5 * mass_of(p, i) * v2;
+        e += is_material(p, i) ? 0.5 * mass_of(p, i) * v2 : 0.0;
     }
     return e;
 }
@@ -110,6 +151,6 @@ double solid_total_mass(const solid_particles *p)
 {
     double m = 0.0;
     for (int i = 0; i < p->n; i++)
-        m += mass_of(p, i);
+        m += is_material(p, i) ? mass_of(p, i) : 0.0;
     return m;
 }

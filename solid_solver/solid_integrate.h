@@ -11,7 +11,11 @@
  * The damping term -c v makes the last two lines implicit in v_{n+1}; solved exactly,
  *     v_{n+1} = (v_{n+1/2} + h/2 (F_{n+1} / m + g)) / (1 + c h / 2),
  * which is stable for any c >= 0 (an explicit -c v_{n+1/2} would need c h < 2) and
- * reduces to Eq. 55 for c = 0. Clamped points keep x = x0, v = a = 0. */
+ * reduces to Eq. 55 for c = 0. Clamped points keep x = x0, v = a = 0, except mirrored
+ * ones (SOLID_MIRRORED), which follow their partner m: x - x0 = -(x_m - x0_m),
+ * v = -v_m, a = -a_m. Such a point is a function of its partner's position, so the
+ * internal force on it belongs to the partner with the opposite sign
+ * (solid_mirror_forces): the dynamics stay those of an energy. */
 #ifndef FSI_SOLID_INTEGRATE_H
 #define FSI_SOLID_INTEGRATE_H
 
@@ -57,10 +61,15 @@ int solid_verlet_kick(solid_particles *p, const solid_forces *f, double h,
                       const solid_integrator *in, const double *x_prev, double *work,
                       solid_fault *fault);
 
-/* Kinetic energy sum 1/2 m v^2 [J, per unit thickness in 2D]. */
+/* Moves the internal force of every mirrored point onto its partner (f_m -= f_g,
+ * f_g = 0: x_g depends on x_m with the Jacobian -I). Nothing without mirrored points. */
+void solid_mirror_forces(const solid_particles *p, double *internal);
+
+/* Kinetic energy sum 1/2 m v^2 over material points (not mirrored ones) [J, per unit
+ * thickness in 2D]. */
 double solid_kinetic_energy(const solid_particles *p);
 
-/* Total mass [kg, per unit thickness in 2D]. */
+/* Total mass of the material points [kg, per unit thickness in 2D]. */
 double solid_total_mass(const solid_particles *p);
 
 #endif

@@ -80,6 +80,14 @@ static const fsi_key_spec region_keys[] = {
     {"ramp_time", FSI_KEY_REAL, "s", "0", FSI_BOUND_MIN, 0, 0, NULL,
      "A load grows linearly from 0 at t = 0 to 'force' at t = ramp_time and then holds; 0 "
      "applies it at once."},
+    {"clamp_face", FSI_KEY_CHOICE, "-", "none", 0, 0, 0, "none|x_min|x_max|y_min|y_max|z_min|z_max",
+     "Clamp only: the face of the box that the body touches. Each clamped point then "
+     "mirrors the body point at its image across that face (displacement -u), so that "
+     "the families near the clamp see a displacement field that vanishes on the face "
+     "and continues smoothly; the clamped points are not material (no mass, no strain "
+     "energy). This removes the softening by about one horizon that a fixed layer gives "
+     "(docs/nosbpd.md, Clamps). none: the points stay at x0 and are material held by a "
+     "rigid fixture. The box should be one horizon thick."},
 };
 
 const fsi_key_table fsi_solid_region_keys = {

@@ -125,9 +125,13 @@ static int setup(solid_run *s, fsi_participant *part)
         return -1;
     if (material_from_case(&s->mat, c, ROLE, s->msg, ms) != 0)
         return -1;
-    if (solid_geometry_build(&s->geometry, s->mat.density, &s->p, s->msg, ms) != 0)
+    int unmirrored = 0;
+    if (solid_geometry_build(&s->geometry, s->mat.density, &s->p, &unmirrored, s->msg, ms) != 0)
         return -1;
     solid_particles *p = &s->p;
+    if (unmirrored > 0)
+        fsi_info("warning: %d points of clamp regions with a clamp_face have no unclamped "
+                 "particle at their mirror image; they stay fixed at x0", unmirrored);
 
     s->safety = fsi_case_get_real(c, ROLE, "time_step_safety", 0.8);
     s->energy_limit = fsi_case_get_real(c, ROLE, "energy_growth_limit", 2.0);
@@ -298,6 +302,7 @@ static int advance(solid_run *s, double t0, double dt, int window)
                          "%ld)", window, j + 1, n);
             return -1;
         }
+        solid_mirror_forces(p, s->f_int);
 
         fsi_timer_start(&s->timers, s->t_integrate);
         double *swap = s->f_ext_prev;

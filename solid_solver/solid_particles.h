@@ -11,6 +11,11 @@
 enum {
     SOLID_CLAMPED = 1,      /* displacement held at zero (velocity and acceleration 0) */
     SOLID_LOADED = 2,       /* carries a prescribed external load from the case */
+    /* Also SOLID_CLAMPED: a clamp point that mirrors the body across the clamp face
+     * (x - x0 = -(x_m - x0_m) for its partner m = mirror[i]). It is not material: no
+     * mass, no strain energy, no force state; it only shows the body's families the
+     * displacement field continued past the clamp (docs/nosbpd.md, "Clamps"). */
+    SOLID_MIRRORED = 4,
 };
 
 typedef struct {
@@ -25,6 +30,7 @@ typedef struct {
     double *density;        /* reference density rho0 [kg/m^DIM] */
     uint8_t *flags;         /* SOLID_* bits */
     int32_t *block;         /* index of the block the point came from */
+    int32_t *mirror;        /* partner of a SOLID_MIRRORED point, else -1; NULL if none */
 } solid_particles;
 
 #endif

@@ -18,9 +18,20 @@ enum {
     /* det F <= 0 or F singular with failure on: the point has no force state. */
     NOSBPD_POINT_INVERTED = 2,
     NOSBPD_POINT_WARNED = 4,    /* a warning about it went to stderr */
+    /* gradient_order = 2, but the family (a strip too thin, or after bond failure)
+     * cannot carry a quadratic fit: F is the linear fit of 000 Eq. 36 there. */
+    NOSBPD_POINT_LINEAR_FIT = 8,
+    /* A mirrored clamp point (SOLID_MIRRORED): its position enters the families of
+     * its neighbours, but it is not material and has no force state of its own. */
+    NOSBPD_POINT_GHOST = 16,
 };
 
-/* Points without a force state of their own (either flag above). */
+/* The flags that leave a point without a force state of its own. */
+#define NOSBPD_NO_FORCE_STATE                                                          \
+    (NOSBPD_POINT_SINGULAR_SHAPE | NOSBPD_POINT_INVERTED | NOSBPD_POINT_GHOST)
+
+/* Points without a force state of their own through failure or a poor family
+ * (SINGULAR_SHAPE or INVERTED; mirrored clamp points are not counted). */
 int nosbpd_points_without_force_state(const solid_model *m);
 
 /* Directed bonds (each pair counts twice) in all, and broken ones. */

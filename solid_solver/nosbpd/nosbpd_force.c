@@ -1,41 +1,53 @@
 /* Internal force of the NOSB-PD correspondence model (000 §2.2), two gather passes
  * over the CSR bonds, each parallel over points with no shared writes (so the
- * result does not depend on the number of threads, bit for bit):
+ * result does not depend on the number of threads, bit for bit).
+ *
+ * The deformation of a family is fitted in the basis b(xi) (nosbpd_internal.h):
+ *     C = N A^-1,  N = sum_J omega V_J y (x) b(xi),  A = sum_J omega V_J b (x) b,
+ * F the first FSI_DIM columns of C. With b = xi (gradient_order = 1) A = K and this
+ * is 000 Eqs. 34 and 36. With the quadratic monomials added (order 2) F is exact for
+ * quadratic motions at every point, also where the family is cut by a surface,
+ * which a linear fit gets wrong by the curvature times the offset of the family's
+ * centroid (docs/nosbpd.md, "Second-order deformation gradient"). In both cases
+ * F = sum_J omega V_J y (x) g_J with g = G b(xi), G the first FSI_DIM rows of A^-1,
+ * so the force state of the strain energy V W(F) is T<xi> = omega P G b(xi)
+ * (000 Eq. 33 for order 1, where G b = K^-1 xi).
  *
  * Pass 1, per point I:
  *   - bond failure (Eq. 47): an intact bond with stretch
  *     s = (|y| - |xi|) / |xi| > s0 breaks for ever (tested without a square root as
  *     |y|^2 > (1 + s0)^2 |xi|^2). Both halves of a pair compute the same numbers,
  *     so they break together;
- *   - N_{n+1} = sum_J omega V_J y_{n+1} (x) xi and N_n the same at x_prev, over the
- *     intact bonds; if a bond broke, K, K^-1 and the damage are recomputed
- *     (Eqs. 34, 49);
- *   - F_{n+1} = N_{n+1} K^-1, F_n = N_n K^-1 (Eqs. 36, 38);
+ *   - N_{n+1} and N_n (at x_prev) over the intact bonds; if a bond broke, K, A^-1
+ *     and the damage are recomputed (Eqs. 34, 49);
+ *   - C = N_{n+1} A^-1, F_{n+1} and F_n (Eqs. 36, 38);
  *   - Hughes-Winget update of the Cauchy stress (Eqs. 37-46, nosbpd_stress_update.h);
- *   - P = J sigma F^-T (Eq. 35) and B_I = P K^-1 - G C_w F_{n+1}.
- * Pass 2, per point I, the gather form of Eq. 32 with T_I<xi> = omega P_I K_I^-1 xi
- * (Eq. 33) and T_J<-xi> = -omega P_J K_J^-1 xi, plus the stabilisation
- * T_s,I<xi> = G C_w omega (y - F_I xi) (nosbpd_stabilisation.h):
- *   f_I = V_I sum_J omega V_J [(B_I + B_J) xi + (s_I + s_J) y]
+ *   - P = J sigma F^-T (Eq. 35) and D_I = P G - s C.
+ * Pass 2, per point I, the gather form of Eq. 32 with T_I<xi> = omega P_I G_I b(xi),
+ * T_J<-xi> = omega P_J G_J b(-xi), plus the stabilisation
+ * T_s,I<xi> = s omega (y - C_I b(xi)) (nosbpd_stabilisation.h):
+ *   f_I = V_I sum_J omega V_J [D_I b(xi) - D_J b(-xi) + (s_I + s_J) y]
  * [N, per unit thickness in 2D], with s = G C_w (0 for a point without force state).
+ * b(-xi) differs from b(xi) only in the sign of its linear part.
  *
  * A point without force state (singular K, or inverted F with failure on) has
- * B = 0 and s = 0: it still feels its neighbours' force states through its bonds,
+ * D = 0 and s = 0: it still feels its neighbours' force states through its bonds,
  * exerts none of its own, and its stress is zero. */
 #include <stdio.h>
+#include <string.h>
 
 #include "nosbpd_internal.h"
 #include "nosbpd_stress_update.h"
 
-#define NO_FORCE_STATE (NOSBPD_POINT_SINGULAR_SHAPE | NOSBPD_POINT_INVERTED)
+#define NO_FORCE_STATE NOSBPD_NO_FORCE_STATE
 
 /* Pass-1 outcome of a point. */
 enum { POINT_OK = 0, POINT_BECAME_SINGULAR = 1, POINT_INVERTED = 2, POINT_NOT_FINITE = 3 };
 
 static void clear_point(solid_model *m, int i)
 {
-    double *g = m->gather + (int64_t)i * NOSBPD_GATHER_STRIDE;
-    for (int k = 0; k < NOSBPD_GATHER_STRIDE; k++)
+    double *g = m->gather + (int64_t)i * m->gather_stride;
+    for (int k = 0; k < m->gather_stride; k++)
         g[k] = 0.0;
     for (int k = 0; k < 6; k++)
         m->stress[(int64_t)i * 6 + k] = 0.0;
@@ -57,21 +69,20 @@ static int update_point(solid_model *m, const solid_particles *p, const double *
     const double *restrict x = p->x;
     const double *restrict xi_all = b->xi;
     const double *restrict weight = b->weight;
-    const int32_t *restrict nb = b->neighbour;
+    const int32_t *restrict nb_index = b->neighbour;
     uint8_t *restrict intact = b->intact;
     const int failure = m->failure;
     const double crit2 = (1.0 + m->critical_stretch) * (1.0 + m->critical_stretch);
 
-    double n1[FSI_MAT_SIZE], n0[FSI_MAT_SIZE];
-    fsi_mat_zero(n1);
-    fsi_mat_zero(n0);
+    const int nb = m->n_basis;
+    const double inv_delta = 1.0 / m->delta;
+    double n1[FSI_DIM * NOSBPD_MAX_BASIS] = {0}, n0[FSI_DIM * NOSBPD_MAX_BASIS] = {0};
     const double *xi_pos = x + (int64_t)i * FSI_DIM, *xp_pos = x_prev + (int64_t)i * FSI_DIM;
     int broken_here = 0;
     for (int64_t q = b->offset[i]; q < b->offset[i + 1]; q++) {
         if (!intact[q])
             continue;
-        const int j = nb[q];
-        const double *xi = xi_all + q * FSI_DIM;
+        const int j = nb_index[q];
         double y1[FSI_DIM], y0[FSI_DIM];
         for (int d = 0; d < FSI_DIM; d++) {
             y1[d] = x[(int64_t)j * FSI_DIM + d] - xi_pos[d];
@@ -86,8 +97,16 @@ static int update_point(solid_model *m, const solid_particles *p, const double *
                 continue;
             }
         }
-        fsi_mat_add_outer(n1, weight[q], y1, xi);
-        fsi_mat_add_outer(n0, weight[q], y0, xi);
+        double basis[NOSBPD_MAX_BASIS];
+        nosbpd_basis(xi_all + q * FSI_DIM, inv_delta, nb, basis);
+        const double w = weight[q];
+        for (int r = 0; r < FSI_DIM; r++) {
+            const double a1 = w * y1[r], a0 = w * y0[r];
+            for (int c = 0; c < nb; c++) {
+                n1[r * nb + c] += a1 * basis[c];
+                n0[r * nb + c] += a0 * basis[c];
+            }
+        }
     }
     *broke = broken_here;
 
@@ -104,12 +123,25 @@ static int update_point(solid_model *m, const solid_particles *p, const double *
         return outcome;
     }
 
-    const double *k_inv = m->k_inv + (int64_t)i * FSI_MAT_SIZE;
+    /* C = N A^-1 (A^-1 symmetric); F = its first FSI_DIM columns (Eq. 36). */
+    const double *a_inv = m->moment_inv + (int64_t)i * nb * nb;
+    double *fit = m->fit + (int64_t)i * FSI_DIM * nb;
     double *f1 = m->defgrad + (int64_t)i * FSI_MAT_SIZE;
-    double f0[FSI_MAT_SIZE], f1_new[FSI_MAT_SIZE];
-    fsi_mat_mul(n1, k_inv, f1_new); /* Eq. 36 */
-    fsi_mat_mul(n0, k_inv, f0);
-    if (!all_finite(f1_new, FSI_MAT_SIZE) || !all_finite(f0, FSI_MAT_SIZE)) {
+    double f0[FSI_MAT_SIZE], f1_new[FSI_MAT_SIZE], fit_new[FSI_DIM * NOSBPD_MAX_BASIS];
+    for (int r = 0; r < FSI_DIM; r++)
+        for (int c = 0; c < nb; c++) {
+            double t1 = 0.0, t0 = 0.0;
+            for (int k = 0; k < nb; k++) {
+                t1 += n1[r * nb + k] * a_inv[k * nb + c];
+                t0 += n0[r * nb + k] * a_inv[k * nb + c];
+            }
+            fit_new[r * nb + c] = t1;
+            if (c < FSI_DIM) {
+                FSI_MAT(f1_new, r, c) = t1;
+                FSI_MAT(f0, r, c) = t0;
+            }
+        }
+    if (!all_finite(fit_new, FSI_DIM * nb) || !all_finite(f0, FSI_MAT_SIZE)) {
         fsi_mat_copy(f1_new, f1);
         return POINT_NOT_FINITE;
     }
@@ -124,14 +156,19 @@ static int update_point(solid_model *m, const solid_particles *p, const double *
         return POINT_INVERTED;
     }
     fsi_mat_copy(f1_new, f1);
+    memcpy(fit, fit_new, sizeof(double) * (size_t)(FSI_DIM * nb));
 
-    /* B = P K^-1 - G C_w F. */
-    double *g = m->gather + (int64_t)i * NOSBPD_GATHER_STRIDE;
-    fsi_mat_mul(pk1, k_inv, g);
+    /* D = P G - s C, G = rows 0 .. FSI_DIM-1 of A^-1. */
+    double *g = m->gather + (int64_t)i * m->gather_stride;
     const double s = m->stab_modulus;
-    for (int k = 0; k < FSI_MAT_SIZE; k++)
-        g[k] -= s * f1[k];
-    g[FSI_MAT_SIZE] = s;
+    for (int r = 0; r < FSI_DIM; r++)
+        for (int c = 0; c < nb; c++) {
+            double t = -s * fit[r * nb + c];
+            for (int k = 0; k < FSI_DIM; k++)
+                t += FSI_MAT(pk1, r, k) * a_inv[k * nb + c];
+            g[r * nb + c] = t;
+        }
+    g[FSI_DIM * nb] = s;
     return POINT_OK;
 }
 
@@ -142,12 +179,14 @@ static void gather_force(const solid_model *m, const solid_particles *p, int i, 
     const double *restrict x = p->x;
     const double *restrict xi_all = b->xi;
     const double *restrict weight = b->weight;
-    const int32_t *restrict nb = b->neighbour;
+    const int32_t *restrict nb_index = b->neighbour;
     const uint8_t *restrict intact = b->intact;
     const double *restrict gather = m->gather;
+    const int nb = m->n_basis, stride = m->gather_stride;
+    const double inv_delta = 1.0 / m->delta;
 
-    const double *gi = gather + (int64_t)i * NOSBPD_GATHER_STRIDE;
-    const double si = gi[FSI_MAT_SIZE];
+    const double *di = gather + (int64_t)i * stride;
+    const double si = di[FSI_DIM * nb];
     const double *xi_pos = x + (int64_t)i * FSI_DIM;
     double f[FSI_DIM];
     for (int d = 0; d < FSI_DIM; d++)
@@ -155,15 +194,19 @@ static void gather_force(const solid_model *m, const solid_particles *p, int i, 
     for (int64_t q = b->offset[i]; q < b->offset[i + 1]; q++) {
         if (!intact[q])
             continue;
-        const int j = nb[q];
-        const double *gj = gather + (int64_t)j * NOSBPD_GATHER_STRIDE;
-        const double *xi = xi_all + q * FSI_DIM;
-        const double s = si + gj[FSI_MAT_SIZE];
+        const int j = nb_index[q];
+        const double *dj = gather + (int64_t)j * stride;
+        double basis[NOSBPD_MAX_BASIS];
+        nosbpd_basis(xi_all + q * FSI_DIM, inv_delta, nb, basis);
+        const double s = si + dj[FSI_DIM * nb];
         const double w = weight[q];
         for (int r = 0; r < FSI_DIM; r++) {
+            const double *dir = di + r * nb, *djr = dj + r * nb;
             double t = s * (x[(int64_t)j * FSI_DIM + r] - xi_pos[r]);
             for (int c = 0; c < FSI_DIM; c++)
-                t += (gi[r * FSI_DIM + c] + gj[r * FSI_DIM + c]) * xi[c];
+                t += (dir[c] + djr[c]) * basis[c];     /* linear part: b(-xi) = -xi */
+            for (int c = FSI_DIM; c < nb; c++)
+                t += (dir[c] - djr[c]) * basis[c];     /* quadratic part: even */
             f[r] += w * t;
         }
     }
@@ -231,7 +274,7 @@ int solid_model_internal_force(solid_model *m, const solid_particles *p, const d
     if (new_flags) {
         int count = 0;
         for (int i = 0; i < n; i++) {
-            if (!(m->flags[i] & NO_FORCE_STATE))
+            if (!(m->flags[i] & (NOSBPD_POINT_SINGULAR_SHAPE | NOSBPD_POINT_INVERTED)))
                 continue;
             count++;
             if (!(m->flags[i] & NOSBPD_POINT_WARNED))

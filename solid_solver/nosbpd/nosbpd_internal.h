@@ -16,6 +16,11 @@
  * strip two points thick, stays below 100. */
 #define NOSBPD_MAX_CONDITION_K 1e6
 
+/* The same bound for the moment matrix of the quadratic fit (order 2). A family
+ * confined to two lattice rows (a strip edge seen from a two-point-thick strip)
+ * cannot tell xi_y^2 from xi_y and is singular; such points use the linear fit. */
+#define NOSBPD_MAX_CONDITION_FIT 1e6
+
 /* Below this many bonds the point loops run on one thread: a fork and a barrier
  * cost more than the work (the results are the same either way). */
 #define NOSBPD_PARALLEL_MIN_BONDS 4096
@@ -23,9 +28,38 @@
 /* Lines of per-point warnings on stderr before only a count is given. */
 #define NOSBPD_MAX_WARNINGS 20
 
-/* Per point, what the force gather needs of a neighbour: B = P K^-1 - G C_w F and
- * the stabilisation modulus s (G C_w, or 0 for a point without force state). */
-#define NOSBPD_GATHER_STRIDE (FSI_MAT_SIZE + 1)
+/* The deformation is fitted over each family in the basis b(xi) (nosbpd_basis):
+ * the bond vector xi (gradient_order = 1, 000 Eqs. 34, 36) or xi and its quadratic
+ * monomials divided by delta (gradient_order = 2). NOSBPD_MAX_BASIS is the longer. */
+#if FSI_DIM == 2
+#define NOSBPD_MAX_BASIS 5
+#else
+#define NOSBPD_MAX_BASIS 9
+#endif
+
+/* b(xi) for a basis of nb = FSI_DIM (linear) or NOSBPD_MAX_BASIS (quadratic)
+ * functions. The quadratic ones are scaled by 1 / delta so that every entry of the
+ * moment matrix is of order delta^2 (its condition number then measures the
+ * geometry of the family, not the units). */
+static inline void nosbpd_basis(const double *xi, double inv_delta, int nb, double *b)
+{
+    for (int d = 0; d < FSI_DIM; d++)
+        b[d] = xi[d];
+    if (nb == FSI_DIM)
+        return;
+#if FSI_DIM == 2
+    b[2] = xi[0] * xi[0] * inv_delta;
+    b[3] = xi[0] * xi[1] * inv_delta;
+    b[4] = xi[1] * xi[1] * inv_delta;
+#else
+    b[3] = xi[0] * xi[0] * inv_delta;
+    b[4] = xi[1] * xi[1] * inv_delta;
+    b[5] = xi[2] * xi[2] * inv_delta;
+    b[6] = xi[0] * xi[1] * inv_delta;
+    b[7] = xi[1] * xi[2] * inv_delta;
+    b[8] = xi[2] * xi[0] * inv_delta;
+#endif
+}
 
 struct solid_model {
     material mat;
@@ -33,6 +67,9 @@ struct solid_model {
     double dx;                      /* lattice spacing [m] */
     double delta;                   /* horizon [m] */
     nosbpd_influence influence;
+    int gradient_order;             /* 1 or 2 (key gradient_order) */
+    int n_basis;                    /* nb: FSI_DIM, or NOSBPD_MAX_BASIS for order 2 */
+    int gather_stride;              /* FSI_DIM * nb + 1 */
     double zero_energy_coefficient; /* G */
     double stab_modulus;            /* G C_w [Pa / m^(DIM+2)... see nosbpd_stabilisation.h] */
     int failure;
@@ -44,8 +81,17 @@ struct solid_model {
 
     /* Per point. */
     double *k_inv;                  /* K^-1, FSI_MAT_SIZE each (000 Eq. 34) */
+    /* A^-1 of the moment matrix A = sum_J omega V_J b (x) b, nb * nb each: K^-1 for
+     * order 1; for order 2 the quadratic fit's, or K^-1 padded with zeros where the
+     * family cannot carry a quadratic fit (NOSBPD_POINT_LINEAR_FIT). */
+    double *moment_inv;
+    /* C = [F | H / 2 scaled] = (sum_J omega V_J y (x) b) A^-1 at the last call,
+     * FSI_DIM * nb each; F its first FSI_DIM columns (Eq. 36 for order 1). */
+    double *fit;
     double *defgrad;                /* F at the last call, FSI_MAT_SIZE each (Eq. 36) */
-    double *gather;                 /* B and s, NOSBPD_GATHER_STRIDE each */
+    /* Per point for the force gather, gather_stride each: D = P G - s C (FSI_DIM x nb,
+     * G the first FSI_DIM rows of A^-1) and s (G C_w, 0 without force state). */
+    double *gather;
     double *stress;                 /* Cauchy stress, 6 each */
     material_state *mstate;
     double *work;                   /* stress work per reference volume [J/m^DIM...] */
@@ -64,9 +110,11 @@ struct solid_model {
 };
 
 /* K of point i over its intact bonds (000 Eq. 34: K = sum_J omega V_J xi (x) xi),
- * its inverse, intact count and damage (Eq. 49). Returns 0, or -1 when K is not
+ * its inverse, the moment matrix inverse of the fit (order 2: falls back to the
+ * linear fit, flag NOSBPD_POINT_LINEAR_FIT, when the family cannot carry a
+ * quadratic one), intact count and damage (Eq. 49). Returns 0, or -1 when K is not
  * usable (fewer than FSI_DIM + 1 intact bonds, singular or ill-conditioned): then
- * k_inv[i] is zero. */
+ * k_inv[i] and moment_inv[i] are zero. */
 int nosbpd_shape_tensor(solid_model *m, const solid_particles *p, int i);
 
 /* Prints "nosbpd: warning: ..." about point i once (flag NOSBPD_POINT_WARNED),

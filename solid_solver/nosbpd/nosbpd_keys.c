@@ -11,11 +11,18 @@ static const fsi_key_spec keys[] = {
      "one|inverse|gaussian",
      "Bond weight omega(|xi|) in the shape tensor, deformation gradient and force state: "
      "one (1), inverse (delta / |xi|) or gaussian (exp(-(2 |xi| / delta)^2))."},
-    {"zero_energy_coefficient", FSI_KEY_REAL, "-", "0.1", FSI_BOUND_MIN | FSI_BOUND_MAX, 0, 10,
+    {"gradient_order", FSI_KEY_INT, "-", "2", FSI_BOUND_MIN | FSI_BOUND_MAX, 1, 2, NULL,
+     "Order of the fit that gives the deformation gradient over a family: 1 is the "
+     "linear fit of 000 Eqs. 34 and 36 (F = N K^-1); 2 adds the quadratic terms, so "
+     "that F stays exact for bending-like (quadratic) motions where a surface cuts the "
+     "family (docs/nosbpd.md). Points whose family cannot carry a quadratic fit use "
+     "the linear one."},
+    {"zero_energy_coefficient", FSI_KEY_REAL, "-", "0.3", FSI_BOUND_MIN | FSI_BOUND_MAX, 0, 10,
      NULL,
      "Coefficient G of Silling's 2017 zero-energy mode control, a bond force G C omega z "
-     "against the non-uniform deformation z = Y - F xi; 1 matches the stiffness of a "
-     "bond-based material of the same bulk modulus, 0 switches the control off."},
+     "against the part z of the deformed bond that the family's fit does not explain "
+     "(z = Y - F xi for gradient_order = 1); 1 matches the stiffness of a bond-based "
+     "material of the same bulk modulus, 0 switches the control off."},
     {"failure", FSI_KEY_BOOL, "-", "false", 0, 0, 0, NULL,
      "Whether bonds break (permanently) when their stretch exceeds the critical stretch "
      "(000 Eq. 47); needs critical_stretch or fracture_energy."},

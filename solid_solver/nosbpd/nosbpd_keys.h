@@ -12,6 +12,7 @@ extern const fsi_key_table fsi_nosbpd_keys;
 /* Defaults, shared with solid_model_create's fallbacks for unvalidated cases. */
 #define NOSBPD_DEFAULT_HORIZON_FACTOR 3.0
 #define NOSBPD_DEFAULT_INFLUENCE "inverse"
-#define NOSBPD_DEFAULT_ZERO_ENERGY_COEFFICIENT 0.1
+#define NOSBPD_DEFAULT_ZERO_ENERGY_COEFFICIENT 0.3
+#define NOSBPD_DEFAULT_GRADIENT_ORDER 2
 
 #endif

@@ -27,6 +27,8 @@ void solid_model_free(solid_model *m)
         return;
     nosbpd_bonds_free(&m->bonds);
     free(m->k_inv);
+    free(m->moment_inv);
+    free(m->fit);
     free(m->defgrad);
     free(m->gather);
     free(m->stress);
@@ -59,6 +61,14 @@ static int read_keys(solid_model *m, const fsi_case *c, char *msg, size_t msg_si
                  "gaussian", inf);
         return -1;
     }
+    m->gradient_order = (int)fsi_case_get_int(c, SECTION, "gradient_order",
+                                              NOSBPD_DEFAULT_GRADIENT_ORDER);
+    if (m->gradient_order != 1 && m->gradient_order != 2) {
+        snprintf(msg, msg_size, "[solid] gradient_order = %d: needs 1 or 2", m->gradient_order);
+        return -1;
+    }
+    m->n_basis = m->gradient_order == 1 ? FSI_DIM : NOSBPD_MAX_BASIS;
+    m->gather_stride = FSI_DIM * m->n_basis + 1;
     m->zero_energy_coefficient = fsi_case_get_real(c, SECTION, "zero_energy_coefficient",
                                                    NOSBPD_DEFAULT_ZERO_ENERGY_COEFFICIENT);
     if (!(m->zero_energy_coefficient >= 0.0 && m->zero_energy_coefficient <= 10.0)) {
@@ -154,8 +164,10 @@ solid_model *solid_model_create(const fsi_case *c, const solid_particles *p, cha
     }
     const int n = p->n;
     ALLOC(m->k_inv, (int64_t)n * FSI_MAT_SIZE);
+    ALLOC(m->moment_inv, (int64_t)n * m->n_basis * m->n_basis);
+    ALLOC(m->fit, (int64_t)n * FSI_DIM * m->n_basis);
     ALLOC(m->defgrad, (int64_t)n * FSI_MAT_SIZE);
-    ALLOC(m->gather, (int64_t)n * NOSBPD_GATHER_STRIDE);
+    ALLOC(m->gather, (int64_t)n * m->gather_stride);
     ALLOC(m->stress, (int64_t)n * 6);
     ALLOC(m->mstate, n);
     ALLOC(m->work, n);
@@ -177,7 +189,11 @@ solid_model *solid_model_create(const fsi_case *c, const solid_particles *p, cha
         m->family_volume[i] = v;
         m->thickness_stretch[i] = 1.0;
         fsi_mat_identity(m->defgrad + (int64_t)i * FSI_MAT_SIZE);
-        if (nosbpd_shape_tensor(m, p, i) != 0) {
+        if (p->flags[i] & SOLID_MIRRORED)
+            m->flags[i] |= NOSBPD_POINT_GHOST;
+        for (int d = 0; d < FSI_DIM; d++)   /* C = [I | 0]: the reference fit */
+            m->fit[((int64_t)i * FSI_DIM + d) * m->n_basis + d] = 1.0;
+        if (nosbpd_shape_tensor(m, p, i) != 0 && !(m->flags[i] & NOSBPD_POINT_GHOST)) {
             m->flags[i] |= NOSBPD_POINT_SINGULAR_SHAPE;
             m->n_without_force_state++;
             nosbpd_warn_point(m, p, i, FAMILY_TOO_POOR ": it carries no force state of "
@@ -240,29 +256,32 @@ int solid_model_write_fields(const solid_model *m, fsi_h5_writer *out)
 /* Sum over points of V_I (w_I + W_s,I): w_I the stress work per reference volume
  * accumulated by the Hughes-Winget update (= 1/2 sigma : eps for linear elasticity;
  * with plasticity it includes the dissipated plastic work), W_s,I the energy of the
- * zero-energy mode control, 1/2 G C_w sum_J omega V_J |z|^2, at the current
- * positions with F of the last internal-force call. Per-point terms in parallel,
- * the sum in index order (independent of the thread count). */
+ * zero-energy mode control, 1/2 G C_w sum_J omega V_J |z|^2, z = y - C b(xi), at the
+ * current positions with the fit C of the last internal-force call. Per-point terms
+ * in parallel, the sum in index order (independent of the thread count). */
 double solid_model_strain_energy(const solid_model *m, const solid_particles *p)
 {
     const nosbpd_bonds *b = &m->bonds;
     double *restrict e = m->scratch;
-    const double s = m->stab_modulus;
+    const double s = m->stab_modulus, inv_delta = 1.0 / m->delta;
+    const int nb = m->n_basis;
 #pragma omp parallel for schedule(static) if (b->n_bonds >= NOSBPD_PARALLEL_MIN_BONDS)
     for (int i = 0; i < m->n; i++) {
         double ws = 0.0;
-        if (s > 0.0 && !(m->flags[i] & (NOSBPD_POINT_SINGULAR_SHAPE | NOSBPD_POINT_INVERTED))) {
-            const double *f = m->defgrad + (int64_t)i * FSI_MAT_SIZE;
+        if (s > 0.0 && !(m->flags[i] & NOSBPD_NO_FORCE_STATE)) {
+            const double *fit = m->fit + (int64_t)i * FSI_DIM * nb;
             const double *xi_pos = p->x + (int64_t)i * FSI_DIM;
             for (int64_t q = b->offset[i]; q < b->offset[i + 1]; q++) {
                 if (!b->intact[q])
                     continue;
-                const double *xi = b->xi + q * FSI_DIM;
+                double basis[NOSBPD_MAX_BASIS];
+                nosbpd_basis(b->xi + q * FSI_DIM, inv_delta, nb, basis);
                 const double *xj = p->x + (int64_t)b->neighbour[q] * FSI_DIM;
-                double fx[FSI_DIM], z2 = 0.0;
-                fsi_mat_vec(f, xi, fx);
+                double z2 = 0.0;
                 for (int d = 0; d < FSI_DIM; d++) {
-                    const double z = xj[d] - xi_pos[d] - fx[d];
+                    double z = xj[d] - xi_pos[d];
+                    for (int c = 0; c < nb; c++)
+                        z -= fit[d * nb + c] * basis[c];
                     z2 += z * z;
                 }
                 ws += b->weight[q] * z2;

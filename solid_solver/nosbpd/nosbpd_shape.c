@@ -1,8 +1,106 @@
-/* Shape tensor K of a family (000 Eq. 34), its inverse, and the damage of the point
- * (000 Eq. 49), recomputed whenever one of the point's bonds breaks. */
+/* Shape tensor K of a family (000 Eq. 34), its inverse, the moment matrix of the
+ * quadratic fit (gradient_order = 2) and the damage of the point (000 Eq. 49),
+ * recomputed whenever one of the point's bonds breaks. */
+#include <math.h>
 #include <stdio.h>
+#include <string.h>
 
 #include "nosbpd_internal.h"
+
+/* Inverse of the symmetric n x n matrix a (n <= NOSBPD_MAX_BASIS) by Gauss-Jordan
+ * elimination with partial pivoting. Returns 0, or -1 when a pivot vanishes or the
+ * Frobenius condition number |A| |A^-1| exceeds max_condition. */
+static int moment_matrix_inverse(const double *a, int n, double *out, double max_condition)
+{
+    double w[NOSBPD_MAX_BASIS * NOSBPD_MAX_BASIS];
+    memcpy(w, a, sizeof(double) * (size_t)(n * n));
+    for (int r = 0; r < n; r++)
+        for (int c = 0; c < n; c++)
+            out[r * n + c] = r == c;
+    double norm_a = 0.0;
+    for (int k = 0; k < n * n; k++)
+        norm_a += a[k] * a[k];
+    norm_a = sqrt(norm_a);
+    for (int c = 0; c < n; c++) {
+        int pivot = c;
+        for (int r = c + 1; r < n; r++)
+            if (fabs(w[r * n + c]) > fabs(w[pivot * n + c]))
+                pivot = r;
+        if (!(fabs(w[pivot * n + c]) > 1e-300 * norm_a))
+            return -1;
+        if (pivot != c)
+            for (int k = 0; k < n; k++) {
+                double t = w[c * n + k];
+                w[c * n + k] = w[pivot * n + k];
+                w[pivot * n + k] = t;
+                t = out[c * n + k];
+                out[c * n + k] = out[pivot * n + k];
+                out[pivot * n + k] = t;
+            }
+        const double inv = 1.0 / w[c * n + c];
+        for (int k = 0; k < n; k++) {
+            w[c * n + k] *= inv;
+            out[c * n + k] *= inv;
+        }
+        for (int r = 0; r < n; r++) {
+            if (r == c || w[r * n + c] == 0.0)
+                continue;
+            const double f = w[r * n + c];
+            for (int k = 0; k < n; k++) {
+                w[r * n + k] -= f * w[c * n + k];
+                out[r * n + k] -= f * out[c * n + k];
+            }
+        }
+    }
+    double norm_inv = 0.0;
+    for (int k = 0; k < n * n; k++)
+        norm_inv += out[k] * out[k];
+    if (!(sqrt(norm_inv) * norm_a <= max_condition))
+        return -1;
+    /* Exactly symmetric, like A. */
+    for (int r = 0; r < n; r++)
+        for (int c = r + 1; c < n; c++)
+            out[r * n + c] = out[c * n + r] = 0.5 * (out[r * n + c] + out[c * n + r]);
+    return 0;
+}
+
+/* A^-1 of the quadratic fit of point i, or K^-1 padded with zeros (and the flag
+ * NOSBPD_POINT_LINEAR_FIT) when the family cannot carry one or has a broken bond. */
+static void quadratic_fit_inverse(solid_model *m, int i, const double *k_inv, double *a_inv)
+{
+    const nosbpd_bonds *b = &m->bonds;
+    const int nb = m->n_basis;
+    const double inv_delta = 1.0 / m->delta;
+    double a[NOSBPD_MAX_BASIS * NOSBPD_MAX_BASIS] = {0};
+    int count = 0;
+    for (int64_t q = b->offset[i]; q < b->offset[i + 1]; q++) {
+        if (!b->intact[q])
+            continue;
+        double v[NOSBPD_MAX_BASIS];
+        nosbpd_basis(b->xi + q * FSI_DIM, inv_delta, nb, v);
+        for (int r = 0; r < nb; r++)
+            for (int c = 0; c <= r; c++)
+                a[r * nb + c] += b->weight[q] * v[r] * v[c];
+        count++;
+    }
+    for (int r = 0; r < nb; r++)
+        for (int c = r + 1; c < nb; c++)
+            a[r * nb + c] = a[c * nb + r];
+    /* A family cut by a crack is one-sided across it: a quadratic fit there
+     * extrapolates the crack faces' motion and amplifies it (the notched plate goes
+     * unstable once the crack branches). Damaged points keep the linear fit. */
+    const int damaged = count < b->offset[i + 1] - b->offset[i];
+    if (!damaged && count >= nb &&
+        moment_matrix_inverse(a, nb, a_inv, NOSBPD_MAX_CONDITION_FIT) == 0) {
+        m->flags[i] &= (uint8_t)~NOSBPD_POINT_LINEAR_FIT;
+        return;
+    }
+    m->flags[i] |= NOSBPD_POINT_LINEAR_FIT;
+    memset(a_inv, 0, sizeof(double) * (size_t)(nb * nb));
+    for (int r = 0; r < FSI_DIM; r++)
+        for (int c = 0; c < FSI_DIM; c++)
+            a_inv[r * nb + c] = FSI_MAT(k_inv, r, c);
+}
 
 int nosbpd_shape_tensor(solid_model *m, const solid_particles *p, int i)
 {
@@ -30,10 +128,17 @@ int nosbpd_shape_tensor(solid_model *m, const solid_particles *p, int i)
     if (m->damage[i] < 0.0)
         m->damage[i] = 0.0; /* round-off when nothing is broken */
     double *k_inv = m->k_inv + (int64_t)i * FSI_MAT_SIZE;
+    const int nb = m->n_basis;
+    double *a_inv = m->moment_inv + (int64_t)i * nb * nb;
     if (count < FSI_DIM + 1 || fsi_mat_inverse(k, k_inv, NOSBPD_MAX_CONDITION_K) != 0) {
         fsi_mat_zero(k_inv);
+        memset(a_inv, 0, sizeof(double) * (size_t)(nb * nb));
         return -1;
     }
+    if (nb == FSI_DIM)
+        fsi_mat_copy(k_inv, a_inv);
+    else
+        quadratic_fit_inverse(m, i, k_inv, a_inv);
     return 0;
 }
 

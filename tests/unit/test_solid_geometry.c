@@ -150,7 +150,7 @@ static solid_block test_block(const char *section, double x0, double x1, double 
 static solid_region test_region(const char *section, solid_region_action action, double x0,
                                 double x1, double y0, double y1)
 {
-    solid_region r = {section, action, {0}, {0}, {0}, 0.0};
+    solid_region r = {section, action, {0}, {0}, {0}, 0.0, -1};
     double lo[3] = {x0, y0, -1.0}, hi[3] = {x1, y1, 1.0};
     for (int d = 0; d < FSI_DIM; d++) {
         r.min[d] = lo[d];
@@ -185,7 +185,7 @@ static void test_lattice(void)
     solid_geometry g = {dx, 1, 0, 0, &b, NULL, NULL};
     solid_particles p;
     char msg[256];
-    CHECK(solid_geometry_build(&g, 2400.0, &p, msg, sizeof msg) == 0, "build: %s", msg);
+    CHECK(solid_geometry_build(&g, 2400.0, &p, NULL, msg, sizeof msg) == 0, "build: %s", msg);
     double volume = 0.0;
     for (int i = 0; i < p.n; i++)
         volume += p.volume[i];
@@ -226,7 +226,7 @@ static void test_regions(void)
     solid_geometry g = {dx, 1, 4, 0, &b, r, NULL};
     solid_particles p;
     char msg[256];
-    CHECK(solid_geometry_build(&g, 1000.0, &p, msg, sizeof msg) == 0, "build: %s", msg);
+    CHECK(solid_geometry_build(&g, 1000.0, &p, NULL, msg, sizeof msg) == 0, "build: %s", msg);
     CHECK(p.n == (2000 - 10) * LAYERS, "notched beam has %d points, want %d", p.n,
           (2000 - 10) * LAYERS);
     int in_notch = 0, clamped = 0, loaded = 0, ids_ok = 1;
@@ -451,7 +451,7 @@ static void test_integration(void)
     uint8_t flags[2] = {0, SOLID_CLAMPED};
     x0[FSI_DIM] = 1.0;
     memcpy(x, x0, sizeof x);
-    solid_particles p = {2, 0.01, id, x0, x, v, a, vol, rho, flags, blk};
+    solid_particles p = {2, 0.01, id, x0, x, v, a, vol, rho, flags, blk, NULL};
     double zero[2 * FSI_DIM] = {0};
     solid_forces f = {zero, zero, zero};
     solid_integrator in = {0.0, {0.0, -9.81}, 0.01};
@@ -518,7 +518,7 @@ static void test_interface(void)
     uint8_t flags[3] = {0};
     for (int i = 0; i < 3; i++)
         x[i * FSI_DIM] = i;
-    solid_particles p = {3, 1.0, id, x0, x, v, a, vol, rho, flags, blk};
+    solid_particles p = {3, 1.0, id, x0, x, v, a, vol, rho, flags, blk, NULL};
     solid_interface_buffers b;
     CHECK(solid_interface_init(&b, 3) == 0, "init");
     b.surface[0] = b.surface[2] = 1;
@@ -551,11 +551,92 @@ static void test_interface(void)
     solid_interface_free(&b);
 }
 
+/* A clamp region with clamp_face = x_max left of a beam: every clamp point pairs with
+ * its image across x = 0 (a beam point), is flagged SOLID_MIRRORED, follows it with
+ * the opposite displacement and velocity after a drift, hands its internal force to
+ * it with the opposite sign, and counts for neither mass nor kinetic energy. */
+static void test_mirror_clamp(void)
+{
+    const double dx = 0.01;
+    solid_block blocks[2] = {test_block("solid.block clamp", -0.03, 0.0, 0.0, 0.05, dx),
+                             test_block("solid.block beam", 0.0, 0.2, 0.0, 0.05, dx)};
+    solid_region r = test_region("solid.region fixed", SOLID_REGION_CLAMP, -0.03, 0.0, -1.0, 1.0);
+    r.clamp_face = solid_clamp_face_parse("x_max");
+    CHECK(r.clamp_face == 1, "x_max parses to %d", r.clamp_face);
+    CHECK(solid_clamp_face_parse("none") == -1 && solid_clamp_face_parse("w_max") == -2,
+          "clamp_face words");
+    solid_geometry g = {dx, 2, 1, 0, blocks, &r, NULL};
+    solid_particles p;
+    char msg[256];
+    int unpaired = -1;
+    CHECK(solid_geometry_build(&g, 1000.0, &p, &unpaired, msg, sizeof msg) == 0, "build: %s",
+          msg);
+    CHECK(unpaired == 0, "%d clamp points without an image", unpaired);
+    int mirrored = 0, images_ok = 1;
+    for (int i = 0; i < p.n; i++) {
+        if (!(p.flags[i] & SOLID_MIRRORED))
+            continue;
+        mirrored++;
+        const int m = p.mirror ? p.mirror[i] : -1;
+        images_ok &= m >= 0 && !(p.flags[m] & SOLID_CLAMPED) &&
+                     fabs(p.x0[m * FSI_DIM] + p.x0[i * FSI_DIM]) < 1e-12 &&
+                     fabs(p.x0[m * FSI_DIM + 1] - p.x0[i * FSI_DIM + 1]) < 1e-12;
+    }
+    CHECK(mirrored == 15 * LAYERS, "%d mirrored points, want %d", mirrored, 15 * LAYERS);
+    CHECK(images_ok, "a mirrored point's partner is not its image across x = 0");
+    const double beam_mass = 1000.0 * 0.2 * 0.05 * (FSI_DIM == 3 ? 0.03 : 1.0);
+    CHECK(fabs(solid_total_mass(&p) - beam_mass) < 1e-9 * beam_mass,
+          "mass %g counts the mirrored points (beam alone %g)", solid_total_mass(&p), beam_mass);
+
+    /* Move every beam point by a velocity field; a drift must carry the images. */
+    for (int i = 0; i < p.n; i++)
+        if (!(p.flags[i] & SOLID_CLAMPED))
+            for (int d = 0; d < FSI_DIM; d++)
+                p.v[i * FSI_DIM + d] = 0.1 * (d + 1) * p.x0[i * FSI_DIM];
+    double *x_prev = malloc((size_t)p.n * FSI_DIM * sizeof *x_prev);
+    double *force = calloc((size_t)p.n * FSI_DIM, sizeof *force);
+    solid_verlet_drift(&p, 0.5, x_prev);
+    double worst = 0.0;
+    for (int i = 0; i < p.n; i++) {
+        const int m = p.mirror[i];
+        if (m < 0)
+            continue;
+        for (int d = 0; d < FSI_DIM; d++) {
+            const double ug = p.x[i * FSI_DIM + d] - p.x0[i * FSI_DIM + d];
+            const double um = p.x[m * FSI_DIM + d] - p.x0[m * FSI_DIM + d];
+            worst = fmax(worst, fmax(fabs(ug + um), fabs(p.v[i * FSI_DIM + d] + p.v[m * FSI_DIM + d])));
+        }
+        force[i * FSI_DIM] = 2.0;
+        force[m * FSI_DIM] = 5.0;
+    }
+    CHECK(worst < 1e-15, "mirrored points do not follow their partners (off by %g)", worst);
+    const double ke = solid_kinetic_energy(&p);
+    double ke_beam = 0.0;
+    for (int i = 0; i < p.n; i++)
+        if (!(p.flags[i] & SOLID_CLAMPED))
+            for (int d = 0; d < FSI_DIM; d++)
+                ke_beam += 0.5 * p.density[i] * p.volume[i] * p.v[i * FSI_DIM + d] * p.v[i * FSI_DIM + d];
+    CHECK(fabs(ke - ke_beam) <= 1e-12 * ke_beam, "kinetic energy %g counts mirrored points "
+          "(beam %g)", ke, ke_beam);
+    solid_mirror_forces(&p, force);
+    int moved = 1;
+    for (int i = 0; i < p.n; i++) {
+        const int m = p.mirror[i];
+        if (m >= 0)
+            moved &= force[i * FSI_DIM] == 0.0 && force[m * FSI_DIM] == 3.0;
+    }
+    CHECK(moved, "the force on a mirrored point does not go to its partner as f_m - f_g");
+    free(x_prev);
+    free(force);
+    solid_particles_free(&p);
+}
+
 int main(void)
 {
     make_scratch();
     test_lattice();
     test_regions();
+    test_mirror_clamp();
     test_mode_shape();
     test_check();
     test_integration();
