@@ -15,6 +15,7 @@
  * and when; nothing non-finite is ever written or sent. */
 #include <float.h>
 #include <math.h>
+#include <omp.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -58,6 +59,7 @@ typedef struct {
     fsi_h5_writer *out;
     fsi_timers timers;
     int t_force, t_integrate, t_exchange, t_output;
+    long substeps;                  /* velocity-Verlet sub-steps so far */
     char msg[512];
 } solid_run;
 
@@ -282,6 +284,7 @@ static int advance(solid_run *s, double t0, double dt, int window)
     if (n < 1)
         n = 1;
     double h = dt / (double)n;
+    s->substeps += n;
     for (long j = 0; j < n; j++) {
         double t = t0 + dt * (double)(j + 1) / (double)n;
         fsi_timer_start(&s->timers, s->t_integrate);
@@ -442,11 +445,23 @@ int main(void)
         }
         fsi_advance(part, DBL_MAX);   /* sub-cycling: the solid never limits the window */
     }
-    if (s.model)
+    if (s.model) {
         fsi_info("energy at the end: kinetic %.6g J, strain %.6g J; initial %.6g J, work "
                  "of loads, gravity and fluid %.6g J (gross input %.6g J)",
                  solid_kinetic_energy(&s.p), solid_model_strain_energy(s.model, &s.p),
                  s.energy0, s.work, s.work_in);
+        /* One "bond update" is one directed bond through one internal-force call: the
+         * unit bench/solid_validation.sh reports (docs/performance.md). */
+        const double force_s = s.timers.seconds[s.t_force];
+        const double updates = (double)solid_model_interaction_count(s.model) * (double)s.substeps;
+        fsi_info("performance: %ld sub-steps of %d particles and %lld interactions on %d "
+                 "thread(s); internal force %.3f s (%.4g interaction updates/s, %.4g "
+                 "particle-steps/s), integration %.3f s", s.substeps, s.p.n,
+                 (long long)solid_model_interaction_count(s.model), omp_get_max_threads(),
+                 force_s, force_s > 0.0 ? updates / force_s : 0.0,
+                 force_s > 0.0 ? (double)s.p.n * (double)s.substeps / force_s : 0.0,
+                 s.timers.seconds[s.t_integrate]);
+    }
     free_run(&s);
     return fsi_close(part, &s.timers);
 }

@@ -46,8 +46,12 @@ int solid_model_surface(const solid_model *m, const solid_particles *p, uint8_t 
 /* Writes the model's fields (stress, damage, plastic strain, ...) into the open frame. */
 int solid_model_write_fields(const solid_model *m, fsi_h5_writer *out);
 
-/* Named scalar figures for the run log and for stability checks, e.g. broken bonds. */
+/* Strain energy of the body [J, per unit thickness in 2D] for the energy check. */
 double solid_model_strain_energy(const solid_model *m, const solid_particles *p);
+
+/* Pair interactions one internal-force call works through (for NOSB-PD the directed
+ * bonds of the reference families): the unit of the performance figures in the log. */
+int64_t solid_model_interaction_count(const solid_model *m);
 
 void solid_model_free(solid_model *m);
 

@@ -301,6 +301,11 @@ int nosbpd_points_without_force_state(const solid_model *m)
     return m->n_without_force_state;
 }
 
+int64_t solid_model_interaction_count(const solid_model *m)
+{
+    return m->bonds.n_bonds;
+}
+
 int64_t nosbpd_bond_count(const solid_model *m)
 {
     return m->bonds.n_bonds;
