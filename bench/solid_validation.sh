@@ -4,10 +4,11 @@
 # and 2 threads on S2 at T/dx = 40. Writes OUT/solid_validation.md (the tables of
 # docs/validation.md) and keeps every run's output folder under OUT.
 #
-#   fsi bench solid_validation [OUT] [--quick]
+#   fsi bench solid_validation [OUT] [--quick] [--resume]
 #
 # --quick skips the finest resolutions (S1 dx = 0.005 m, S2 T/dx = 40): about 6 min
-# instead of about 25 min on this 2-core machine. Runs use 2 threads except the
+# instead of about 25 min on this 2-core machine. --resume keeps the validation runs
+# that already finished in OUT (the performance runs are always repeated). Runs use 2 threads except the
 # performance runs, which use 1 and 2 threads in turn, three times each (medians).
 set -euo pipefail
 
@@ -16,9 +17,11 @@ RUN="$ROOT/build/bin/fsi-run"
 PY=/usr/bin/python3
 OUT="$ROOT/out/bench/solid_validation"
 QUICK=0
+RESUME=0
 for arg in "$@"; do
   case "$arg" in
     --quick) QUICK=1 ;;
+    --resume) RESUME=1 ;;
     -*) echo "solid_validation: unknown option $arg" >&2; exit 2 ;;
     *) OUT="$arg" ;;
   esac
@@ -30,6 +33,10 @@ log() { echo "[solid_validation] $*" >&2; }
 
 run_case() {   # run_case NAME CASE [--set ...]: output in OUT/NAME, log in OUT/NAME.txt
   local name="$1" case_file="$2"; shift 2
+  if [ "$RESUME" = 1 ] && grep -q "^fsi run: finished" "$OUT/$name.txt" 2>/dev/null; then
+    log "$name: kept from an earlier run"
+    return
+  fi
   log "$name ..."
   local t0=$SECONDS
   "$RUN" "$ROOT/cases/$case_file" --out "$OUT/$name" --force --threads 2 "$@" \

@@ -258,6 +258,16 @@ static void wait_for(fsi_participant *p, ready_fn ready, request_fn request)
     double interval = REQUEST_FIRST_S;
     double next_request = fsi_wall_seconds() + interval;
     while (!ready(p)) {
+        /* Handle what arrived while this process computed before judging the
+         * coupler's silence: after a window longer than the watchdog timeout its
+         * heartbeats are queued, not missing. */
+        int polled;
+        while ((polled = fsi_bus_poll(p->bus, 0.0)) > 0 && !ready(p))
+            ;
+        if (polled < 0)
+            die_with_run("LCM transport failed while waiting", FSI_EXIT_RUN_FAILURE);
+        if (ready(p))
+            break;
         check_run_alive(p);
         double now = fsi_wall_seconds();
         if (now >= next_request) {
@@ -502,9 +512,31 @@ static void test_stall_switch(const fsi_participant *p)
         pause();
 }
 
+/* Test switch FSI_TEST_SLOW="NAME:K:SECONDS": participant NAME spends SECONDS more in
+ * window K, without handling messages (as a long computation does), then goes on:
+ * how the tests check that a window longer than the watchdog timeout is not taken
+ * for a dead coupler. */
+static void test_slow_switch(const fsi_participant *p)
+{
+    const char *spec = getenv("FSI_TEST_SLOW");
+    size_t len = strlen(p->name);
+    if (!spec || strncmp(spec, p->name, len) != 0 || spec[len] != ':')
+        return;
+    char *end;
+    long k = strtol(spec + len + 1, &end, 10);
+    if (*end != ':' || k != p->window)
+        return;
+    double seconds = strtod(end + 1, NULL);
+    fsi_warn("test switch FSI_TEST_SLOW: %.3g s more in window %d", seconds, p->window);
+    double until = fsi_wall_seconds() + seconds;
+    while (fsi_wall_seconds() < until)
+        ;
+}
+
 int fsi_advance(fsi_participant *p, double dt_next_max)
 {
     test_stall_switch(p);
+    test_slow_switch(p);
     return send_done(p, FSI_STATUS_OK, dt_next_max, 0, NULL, NULL);
 }
 
