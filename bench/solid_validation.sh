@@ -44,6 +44,10 @@ run_case() {   # run_case NAME CASE [--set ...]: output in OUT/NAME, log in OUT/
   log "$name done in $((SECONDS - t0)) s"
 }
 
+wall_of() {  # wall_of NAME: the run's wall time as fsi run reported it [s]
+  sed -n 's/^fsi run: finished in \([0-9.]*\) s.*/\1/p' "$OUT/$1.txt"
+}
+
 last_probe() {  # last_probe DIR COLUMN: the probe's last value
   "$PY" - "$1" "$2" <<'PY'
 import csv, sys
@@ -76,12 +80,11 @@ echo "| dx [m] | points | tip uy [m] | Timoshenko at x = L - dx/2 [m] | error | 
 echo "| --- | --- | --- | --- | --- | --- |"
 S1_DX="0.02 0.01"; [ "$QUICK" = 1 ] || S1_DX="$S1_DX 0.005"
 for dx in $S1_DX; do
-  t0=$SECONDS
   run_case "s1_dx$dx" s1_cantilever.ini --set solid.spacing="$dx" \
     --set "solid.block clamp.min=$(calc "-3*$dx"),0" --set "solid.region fixed.min=$(calc "-3*$dx"),0" \
     --set "solid.region tip_load.min=$(calc "1-$dx"),0" \
     --set "solid.probe tip.point=$(calc "1-$dx/2"),$(calc "0.1-$dx/2")"
-  wall=$((SECONDS - t0))
+  wall=$(wall_of "s1_dx$dx")
   uy=$(last_probe "$OUT/s1_dx$dx" tip_uy)
   # Timoshenko (003 Eq. 50 form, kappa = 5/6) with the lever arm of the loaded column.
   ref=$(calc "(lambda a: 85000*a**3/(3*22e9*0.2**3/12) + 85000*a/(5/6*22e9/2.6*0.2))(1-$dx/2)")
@@ -100,11 +103,10 @@ echo "| --- | --- | --- | --- | --- | --- | --- | --- |"
 S2_RES="10 20"; [ "$QUICK" = 1 ] || S2_RES="$S2_RES 40"
 for r in $S2_RES; do
   dx=$(calc "0.02/$r")
-  t0=$SECONDS
   run_case "s2_T${r}" s2_plate_oscillation.ini --set solid.spacing="$dx" \
     --set "solid.block clamp.min=$(calc "-3*$dx"),-0.01" --set "solid.region fixed.min=$(calc "-3*$dx"),-0.01" \
     --set "solid.probe tip.point=$(calc "0.2-$dx/2"),$(calc "$dx/2")"
-  wall=$((SECONDS - t0))
+  wall=$(wall_of "s2_T${r}")
   read -r period amp < <("$PY" "$ROOT/bench/oscillation.py" "$OUT/s2_T${r}" tip_uy | tail -1 | awk '{print $2, $4}')
   n=$(grep -o '^\[solid\] [0-9]* particles' "$OUT/s2_T${r}/solid.log" | grep -o '[0-9]*')
   ref_t=$(calc "72.39*0.2/(3.25e6/1000)**0.5")
@@ -117,10 +119,9 @@ echo
 # ---- S3: steel beam period.
 echo "## S3 steel beam, first-mode period (reference 0.114 s)"
 echo
-t0=$SECONDS
 run_case s3 s3_steel_beam.ini
 read -r period amp < <("$PY" "$ROOT/bench/oscillation.py" "$OUT/s3" tip_uy | tail -1 | awk '{print $2, $4}')
-echo "period $period s, error $(calc "'%+.2f %%' % (100*($period/0.114-1))") (wall $((SECONDS - t0)) s; 004's pseudo-spring SPH: 7.2 %)."
+echo "period $period s, error $(calc "'%+.2f %%' % (100*($period/0.114-1))") (wall $(wall_of s3) s; 004's pseudo-spring SPH: 7.2 %)."
 echo
 
 # ---- Performance: S2 at T/dx = 40, a short run, 1 and 2 threads, medians of 3.
