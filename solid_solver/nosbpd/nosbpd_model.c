@@ -223,7 +223,8 @@ int solid_model_surface(const solid_model *m, const solid_particles *p, uint8_t 
 {
     int count = 0;
     for (int i = 0; i < p->n; i++) {
-        surface[i] = m->intact_count[i] < m->full.count;
+        /* Mirrored clamp points are not material: the fluid never meets them. */
+        surface[i] = m->intact_count[i] < m->full.count && !(m->flags[i] & NOSBPD_POINT_GHOST);
         count += surface[i];
     }
     return count;
