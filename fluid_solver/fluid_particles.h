@@ -1,0 +1,88 @@
+/* The fluid's particles, structure of arrays, owned by the fluid main loop
+ * (fluid_main.c, to come). Schemes (ulph/, ...) read them and update the fields they
+ * own (density, pressure, volume); they never reallocate them.
+ * Vectors are particle-major: x[i * FSI_DIM + d].
+ *
+ * Three kinds of particle share the arrays (flags): fluid particles, fixed wall
+ * (ghost) particles (000 §2.3) and moving boundary particles, the solid particles
+ * received from the coupling (000 §3). All of them are neighbours in the non-local
+ * operators; which ones are integrated in time is the main loop's business.
+ *
+ * Mass and volume are both kept: a fluid particle's mass is constant and its volume
+ * follows its density, V = m / rho (000 Eq. 16), set by the scheme whenever it
+ * changes the density; a wall or moving boundary particle has a fixed volume V0 (the
+ * solid sends its own) and its mass follows its interpolated density, m = rho V0
+ * (000 Eqs. 52-54). */
+#ifndef FSI_FLUID_PARTICLES_H
+#define FSI_FLUID_PARTICLES_H
+
+#include <stdint.h>
+#include <stdlib.h>
+
+#include "dim.h"
+
+/* Kind of a particle (exactly one of them is set in flags). */
+enum {
+    FLUID_PARTICLE_FLUID = 1,
+    FLUID_PARTICLE_WALL = 2,            /* fixed boundary particle */
+    FLUID_PARTICLE_MOVING_BOUNDARY = 4, /* solid particle seen by the fluid (coupling) */
+};
+
+#define FLUID_PARTICLE_KIND_MASK                                                         \
+    (FLUID_PARTICLE_FLUID | FLUID_PARTICLE_WALL | FLUID_PARTICLE_MOVING_BOUNDARY)
+
+typedef struct {
+    int n;
+    double spacing;         /* initial particle spacing dx [m] */
+    int32_t *id;            /* stable particle id (index at creation; the solid's id for
+                             * moving boundary particles) */
+    double *x;              /* current position [m] */
+    double *v;              /* velocity [m/s] */
+    double *mass;           /* [kg] (2D: per unit thickness, kg/m) */
+    double *volume;         /* V = m / rho [m^DIM] (2D: per unit thickness) */
+    double *density;        /* rho [kg/m^3] */
+    double *pressure;       /* p [Pa] */
+    uint8_t *flags;         /* FLUID_PARTICLE_* */
+} fluid_particles;
+
+/* Frees the arrays and leaves p empty (n = 0, pointers NULL). */
+static inline void fluid_particles_free(fluid_particles *p)
+{
+    free(p->id);
+    free(p->x);
+    free(p->v);
+    free(p->mass);
+    free(p->volume);
+    free(p->density);
+    free(p->pressure);
+    free(p->flags);
+    *p = (fluid_particles){0};
+}
+
+/* Allocates n particles, every field zero. Returns 0, or -1 (p left empty) when
+ * memory runs out or n is negative. */
+static inline int fluid_particles_alloc(fluid_particles *p, int n, double spacing)
+{
+    *p = (fluid_particles){0};
+    if (n < 0)
+        return -1;
+    const size_t m = n > 0 ? (size_t)n : 1;
+    p->n = n;
+    p->spacing = spacing;
+    p->id = calloc(m, sizeof *p->id);
+    p->x = calloc(m * FSI_DIM, sizeof *p->x);
+    p->v = calloc(m * FSI_DIM, sizeof *p->v);
+    p->mass = calloc(m, sizeof *p->mass);
+    p->volume = calloc(m, sizeof *p->volume);
+    p->density = calloc(m, sizeof *p->density);
+    p->pressure = calloc(m, sizeof *p->pressure);
+    p->flags = calloc(m, sizeof *p->flags);
+    if (!p->id || !p->x || !p->v || !p->mass || !p->volume || !p->density || !p->pressure ||
+        !p->flags) {
+        fluid_particles_free(p);
+        return -1;
+    }
+    return 0;
+}
+
+#endif

@@ -1,0 +1,63 @@
+/* The kernel (influence function) of ULPH: the truncated, shifted Gaussian of
+ * 000 Eq. 17,
+ *
+ *     w(r) = alpha_d (exp(-(r/h)^2) - C)   for r < delta,   0 beyond,
+ *
+ * with the smoothing length h (000: h = 1.2 dx), the support radius
+ * delta = q h (000: q = 3) and the shift C = exp(-q^2) (000: C = e^-9), so that w
+ * falls continuously to zero at the edge of the support. alpha_d normalises w over
+ * its support, integral of w dV = 1 in d dimensions:
+ *
+ *     d = 2: alpha = 1 / (pi h^2 (1 - (1 + q^2) e^(-q^2)))
+ *            (000 Eq. 18 for q = 3: 1 / (pi h^2 (1 - 10 e^-9)))
+ *     d = 3: alpha = 1 / (h^3 (pi^(3/2) erf(q) - 2 pi q e^(-q^2) - 4/3 pi q^3 e^(-q^2)))
+ *
+ * (the integral of the Gaussian over the ball of radius q h less C times the ball's
+ * volume). The non-local operators (ulph_operators.h) do not depend on alpha: it
+ * cancels between M^-1 and the sums; the density filter (000 Eq. 24) does not
+ * either. It matters for plain kernel sums. */
+#ifndef ULPH_KERNEL_H
+#define ULPH_KERNEL_H
+
+#include <math.h>
+
+/* The seed paper's choices (000 §2.1.3, after Eq. 17): h = 1.2 dx, delta = 3 h. */
+#define ULPH_KERNEL_H_OVER_DX 1.2
+#define ULPH_KERNEL_SUPPORT_FACTOR 3.0
+
+typedef struct {
+    double h;               /* smoothing length [m] */
+    double support_factor;  /* q = delta / h */
+    double support;         /* delta = q h [m] */
+    double support2;        /* delta^2 [m^2] */
+    double shift;           /* C = exp(-q^2) */
+    double alpha;           /* alpha_d [1/m^DIM] */
+    double inv_h2;          /* 1 / h^2 [1/m^2] */
+} ulph_kernel;
+
+/* The normalisation alpha_d for dimension dim (2 or 3), smoothing length h and
+ * support factor q; 0 for another dimension or non-positive h or q. */
+double ulph_kernel_normalisation(int dim, double h, double q);
+
+/* Sets up the kernel of the build's dimension (FSI_DIM). Returns 0, or -1 when h or
+ * support_factor is not a positive finite number (k is then zeroed: w = 0). */
+int ulph_kernel_init(ulph_kernel *k, double h, double support_factor);
+
+/* w at squared distance r2 (what the neighbour search returns: no square root).
+ * Never negative: the difference exp(-r2/h^2) - C can round below zero just inside
+ * the support. */
+static inline double ulph_kernel_w2(const ulph_kernel *k, double r2)
+{
+    if (!(r2 < k->support2))
+        return 0.0;
+    const double w = exp(-r2 * k->inv_h2) - k->shift;
+    return w > 0.0 ? k->alpha * w : 0.0;
+}
+
+/* w at distance r. */
+static inline double ulph_kernel_w(const ulph_kernel *k, double r)
+{
+    return ulph_kernel_w2(k, r * r);
+}
+
+#endif

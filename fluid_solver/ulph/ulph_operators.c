@@ -1,0 +1,266 @@
+/* The non-local operators of ULPH (000 Eqs. 8-15) over a CSR neighbour list built
+ * each step from the shared neighbour grid: see ulph_operators.h.
+ *
+ * The build makes two passes over the particles, each parallel with no shared
+ * writes: pass 1 counts each particle's neighbours within the support (its row
+ * length), a serial prefix sum turns the counts into row offsets, pass 2 fills each
+ * row (J, w, x_IJ), sums M_I over it (000 Eq. 15), inverts M_I under the rule of the
+ * header, and turns x_IJ into g_IJ = w V_J M_I^-1 x_IJ in place. The grid's query
+ * order is deterministic, so both passes see the same neighbours in the same order
+ * on any thread. */
+#include "ulph_operators.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+void ulph_operators_init(ulph_operators *ops)
+{
+    *ops = (ulph_operators){0};
+    ops->max_condition = ULPH_MAX_CONDITION_M;
+}
+
+void ulph_operators_free(ulph_operators *ops)
+{
+    const double max_condition = ops->max_condition;
+    free(ops->offset);
+    free(ops->neighbour);
+    free(ops->w);
+    free(ops->g);
+    free(ops->shape);
+    free(ops->shape_inv);
+    free(ops->flags);
+    ulph_operators_init(ops);
+    ops->max_condition = max_condition;
+}
+
+/* Room for n particles; 0, or -1 when memory runs out. */
+static int reserve_points(ulph_operators *ops, int n)
+{
+    if (ops->offset && n <= ops->point_capacity)
+        return 0;
+    const size_t cap = (size_t)n + (size_t)n / 4 + 16;
+    int64_t *offset = realloc(ops->offset, (cap + 1) * sizeof *offset);
+    if (offset)
+        ops->offset = offset;
+    double *shape = realloc(ops->shape, cap * FSI_MAT_SIZE * sizeof *shape);
+    if (shape)
+        ops->shape = shape;
+    double *shape_inv = realloc(ops->shape_inv, cap * FSI_MAT_SIZE * sizeof *shape_inv);
+    if (shape_inv)
+        ops->shape_inv = shape_inv;
+    uint8_t *flags = realloc(ops->flags, cap * sizeof *flags);
+    if (flags)
+        ops->flags = flags;
+    if (!offset || !shape || !shape_inv || !flags)
+        return -1;
+    ops->point_capacity = (int)cap;
+    return 0;
+}
+
+/* Room for n_pairs pairs; 0, or -1 when memory runs out. */
+static int reserve_pairs(ulph_operators *ops, int64_t n_pairs)
+{
+    if (ops->g && n_pairs <= ops->pair_capacity)
+        return 0;
+    const size_t cap = (size_t)n_pairs + (size_t)n_pairs / 4 + 64;
+    int32_t *neighbour = realloc(ops->neighbour, cap * sizeof *neighbour);
+    if (neighbour)
+        ops->neighbour = neighbour;
+    double *w = realloc(ops->w, cap * sizeof *w);
+    if (w)
+        ops->w = w;
+    double *g = realloc(ops->g, cap * FSI_DIM * sizeof *g);
+    if (g)
+        ops->g = g;
+    if (!neighbour || !w || !g)
+        return -1;
+    ops->pair_capacity = (int64_t)cap;
+    return 0;
+}
+
+/* Largest |M M^-1 - I| (Frobenius) of a usable inverse. fsi_mat_inverse measures
+ * the condition as |M| |adj M| / |det M|; for a numerically rank-one 3 x 3 M
+ * (collinear neighbours in 3D) adj M and det M are both round-off and their ratio can
+ * look benign (five particles on a line: "condition" 8.7, an inverse of ordinary
+ * size that does not invert M at all). The residual tells: about |M| |M^-1| 1e-16
+ * for a usable M (below 1e-12 under the default bound), of order one or more for
+ * such noise. */
+#define MAX_INVERSE_RESIDUAL 1e-8
+
+/* M^-1 when M is usable under the rule of the header (apart from the neighbour
+ * count): 0, or -1 (m_inv undefined). */
+static int shape_inverse(const double *m, double *m_inv, double max_condition)
+{
+    if (fsi_mat_inverse(m, m_inv, max_condition) != 0)
+        return -1;
+    double residual[FSI_MAT_SIZE];
+    fsi_mat_mul(m, m_inv, residual);
+    for (int d = 0; d < FSI_DIM; d++)
+        FSI_MAT(residual, d, d) -= 1.0;
+    return fsi_mat_norm(residual) <= MAX_INVERSE_RESIDUAL ? 0 : -1;
+}
+
+/* Pass 1: the length of particle i's row. */
+static int64_t row_length(const ulph_kernel *k, const fsi_neighbour_grid *grid, const double *x,
+                          int i)
+{
+    fsi_grid_query q;
+    fsi_grid_query_begin(&q, grid, x + (int64_t)i * FSI_DIM, k->support);
+    int64_t count = 0;
+    int j;
+    double r2;
+    while (fsi_grid_query_next(&q, &j, &r2))
+        if (j != i && r2 < k->support2)
+            count++;
+    return count;
+}
+
+/* Pass 2: fills particle i's row, M_I, M_I^-1 and g; returns 1 when the particle is
+ * flagged ULPH_SINGULAR_SHAPE, else 0. */
+static int fill_row(ulph_operators *ops, const ulph_kernel *k, const fsi_neighbour_grid *grid,
+                    const fluid_particles *p, int i)
+{
+    const double *restrict x = p->x;
+    const double *restrict volume = p->volume;
+    const double *xi = x + (int64_t)i * FSI_DIM;
+    const int64_t first = ops->offset[i];
+    double m[FSI_MAT_SIZE];
+    fsi_mat_zero(m);
+    int informative = 0; /* neighbours that add to M: w V_J > 0 at a non-zero distance */
+
+    fsi_grid_query q;
+    fsi_grid_query_begin(&q, grid, xi, k->support);
+    int64_t e = first;
+    int j;
+    double r2;
+    while (fsi_grid_query_next(&q, &j, &r2)) {
+        if (j == i || !(r2 < k->support2))
+            continue;
+        const double w = ulph_kernel_w2(k, r2);
+        const double wv = w * volume[j];
+        double *rel = ops->g + e * FSI_DIM; /* x_IJ for now, g_IJ below */
+        for (int d = 0; d < FSI_DIM; d++)
+            rel[d] = x[(int64_t)j * FSI_DIM + d] - xi[d];
+        ops->neighbour[e] = j;
+        ops->w[e] = w;
+        fsi_mat_add_outer(m, wv, rel, rel);     /* 000 Eq. 15 */
+        informative += wv > 0.0 && r2 > 0.0;
+        e++;
+    }
+    const int64_t end = e; /* == offset[i + 1]: pass 1 saw the same neighbours */
+
+    /* Exactly symmetric (w V x_a x_b and w V x_b x_a round differently); the adjugate
+     * inverse of a symmetric matrix is then exactly symmetric too. */
+    for (int r = 0; r < FSI_DIM; r++)
+        for (int c = r + 1; c < FSI_DIM; c++)
+            FSI_MAT(m, r, c) = FSI_MAT(m, c, r) = 0.5 * (FSI_MAT(m, r, c) + FSI_MAT(m, c, r));
+    fsi_mat_copy(m, ops->shape + (int64_t)i * FSI_MAT_SIZE);
+    double *m_inv = ops->shape_inv + (int64_t)i * FSI_MAT_SIZE;
+    if (informative < FSI_DIM + 1 || shape_inverse(m, m_inv, ops->max_condition) != 0) {
+        fsi_mat_zero(m_inv);
+        memset(ops->g + first * FSI_DIM, 0, sizeof(double) * (size_t)((end - first) * FSI_DIM));
+        ops->flags[i] = ULPH_SINGULAR_SHAPE;
+        return 1;
+    }
+    ops->flags[i] = 0;
+    for (int64_t q2 = first; q2 < end; q2++) {
+        double *g = ops->g + q2 * FSI_DIM;
+        double rel[FSI_DIM];
+        for (int d = 0; d < FSI_DIM; d++)
+            rel[d] = ops->w[q2] * volume[ops->neighbour[q2]] * g[d];
+        fsi_mat_vec(m_inv, rel, g); /* g_IJ = M_I^-1 (w V_J x_IJ) */
+    }
+    return 0;
+}
+
+int ulph_operators_update(ulph_operators *ops, const ulph_kernel *k,
+                          const fsi_neighbour_grid *grid, const fluid_particles *p)
+{
+    const int n = p->n;
+    ops->n = 0;
+    ops->n_pairs = 0;
+    ops->n_singular = 0;
+    if (grid->n != n || n < 0 || reserve_points(ops, n) != 0) {
+        ulph_operators_free(ops);
+        return -1;
+    }
+    const int parallel = n >= ULPH_PARALLEL_MIN_PARTICLES;
+    int64_t *offset = ops->offset;
+    offset[0] = 0;
+#pragma omp parallel for schedule(static) if (parallel)
+    for (int i = 0; i < n; i++)
+        offset[i + 1] = row_length(k, grid, p->x, i);
+    for (int i = 0; i < n; i++)
+        offset[i + 1] += offset[i];
+    if (reserve_pairs(ops, offset[n]) != 0) {
+        ulph_operators_free(ops);
+        return -1;
+    }
+    int n_singular = 0;
+#pragma omp parallel for schedule(static) if (parallel) reduction(+ : n_singular)
+    for (int i = 0; i < n; i++)
+        n_singular += fill_row(ops, k, grid, p, i);
+    ops->n = n;
+    ops->n_pairs = offset[n];
+    ops->n_singular = n_singular;
+    return 0;
+}
+
+void ulph_gradient_scalar(const ulph_operators *ops, const double *f, double *grad)
+{
+    const int n = ops->n;
+#pragma omp parallel for schedule(static) if (n >= ULPH_PARALLEL_MIN_PARTICLES)
+    for (int i = 0; i < n; i++) {
+        double s[FSI_DIM] = {0};
+        if (!(ops->flags[i] & ULPH_SINGULAR_SHAPE)) {
+            const double fi = f[i];
+            for (int64_t q = ops->offset[i]; q < ops->offset[i + 1]; q++) {
+                const double df = f[ops->neighbour[q]] - fi;
+                const double *g = ops->g + q * FSI_DIM;
+                for (int d = 0; d < FSI_DIM; d++)
+                    s[d] += df * g[d];
+            }
+        }
+        for (int d = 0; d < FSI_DIM; d++)
+            grad[(int64_t)i * FSI_DIM + d] = s[d];
+    }
+}
+
+void ulph_gradient_vector(const ulph_operators *ops, const double *u, double *grad)
+{
+    const int n = ops->n;
+#pragma omp parallel for schedule(static) if (n >= ULPH_PARALLEL_MIN_PARTICLES)
+    for (int i = 0; i < n; i++) {
+        double s[FSI_MAT_SIZE] = {0};
+        if (!(ops->flags[i] & ULPH_SINGULAR_SHAPE)) {
+            const double *ui = u + (int64_t)i * FSI_DIM;
+            for (int64_t q = ops->offset[i]; q < ops->offset[i + 1]; q++) {
+                const double *uj = u + (int64_t)ops->neighbour[q] * FSI_DIM;
+                double du[FSI_DIM];
+                for (int a = 0; a < FSI_DIM; a++)
+                    du[a] = uj[a] - ui[a];
+                fsi_mat_add_outer(s, 1.0, du, ops->g + q * FSI_DIM);
+            }
+        }
+        fsi_mat_copy(s, grad + (int64_t)i * FSI_MAT_SIZE);
+    }
+}
+
+void ulph_divergence(const ulph_operators *ops, const double *u, double *div)
+{
+    const int n = ops->n;
+#pragma omp parallel for schedule(static) if (n >= ULPH_PARALLEL_MIN_PARTICLES)
+    for (int i = 0; i < n; i++) {
+        double s = 0.0;
+        if (!(ops->flags[i] & ULPH_SINGULAR_SHAPE)) {
+            const double *ui = u + (int64_t)i * FSI_DIM;
+            for (int64_t q = ops->offset[i]; q < ops->offset[i + 1]; q++) {
+                const double *uj = u + (int64_t)ops->neighbour[q] * FSI_DIM;
+                const double *g = ops->g + q * FSI_DIM;
+                for (int a = 0; a < FSI_DIM; a++)
+                    s += (uj[a] - ui[a]) * g[a];
+            }
+        }
+        div[i] = s;
+    }
+}
