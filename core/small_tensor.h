@@ -150,7 +150,8 @@ static inline double fsi_mat_det(const double *a)
 
 /* Inverse by the adjugate. Returns 0, or -1 (out untouched) when a is singular, not
  * finite, or ill-conditioned: when the Frobenius condition number
- * |a| |a^-1| exceeds max_condition (at least FSI_DIM for any matrix; pass e.g. 1e8). */
+ * |a| |a^-1| exceeds max_condition (at least FSI_DIM for any matrix; pass e.g. 1e8),
+ * or when a a^-1 misses I by more than 1e-6 in any entry (numerically rank-deficient). */
 static inline int fsi_mat_inverse(const double *restrict a, double *restrict out,
                                   double max_condition)
 {
@@ -179,8 +180,23 @@ static inline int fsi_mat_inverse(const double *restrict a, double *restrict out
     if (!isfinite(na) || !isfinite(nadj) || na * nadj > max_condition * fabs(det))
         return -1;
     const double r = 1.0 / det;
+    double inv[FSI_MAT_SIZE];
     for (int k = 0; k < FSI_MAT_SIZE; k++)
-        out[k] = adj[k] * r;
+        inv[k] = adj[k] * r;
+    /* A rank-deficient 3x3 matrix can pass the test above: its det and adjugate are
+     * both round-off, and their ratio need not be large (five collinear points gave
+     * a "condition number" of 8.7). Such an inverse does not invert: check
+     * a a^-1 = I, which a genuine inverse meets to about cond * 1e-16. */
+    for (int i = 0; i < FSI_DIM; i++)
+        for (int j = 0; j < FSI_DIM; j++) {
+            double t = -(double)(i == j);
+            for (int k = 0; k < FSI_DIM; k++)
+                t += FSI_MAT(a, i, k) * FSI_MAT(inv, k, j);
+            if (!(fabs(t) <= 1e-6))
+                return -1;
+        }
+    for (int k = 0; k < FSI_MAT_SIZE; k++)
+        out[k] = inv[k];
     return 0;
 }
 

@@ -81,10 +81,10 @@ static int reserve_pairs(ulph_operators *ops, int64_t n_pairs)
 /* Largest |M M^-1 - I| (Frobenius) of a usable inverse. fsi_mat_inverse measures
  * the condition as |M| |adj M| / |det M|; for a numerically rank-one 3 x 3 M
  * (collinear neighbours in 3D) adj M and det M are both round-off and their ratio can
- * look benign (five particles on a line: "condition" 8.7, an inverse of ordinary
- * size that does not invert M at all). The residual tells: about |M| |M^-1| 1e-16
- * for a usable M (below 1e-12 under the default bound), of order one or more for
- * such noise. */
+ * look benign (five particles on a line: "condition" 8.7). fsi_mat_inverse now also
+ * refuses an inverse that misses I by 1e-6; under ULPH's condition bound a usable M
+ * meets about |M| |M^-1| 1e-16 < 1e-12, so this tighter bound costs nothing and
+ * keeps the rule independent of the general-purpose one. */
 #define MAX_INVERSE_RESIDUAL 1e-8
 
 /* M^-1 when M is usable under the rule of the header (apart from the neighbour

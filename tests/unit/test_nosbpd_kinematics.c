@@ -24,6 +24,25 @@ static double max_abs_diff(const double *a, const double *b, int n)
     return m;
 }
 
+/* A shape tensor of points on one line is rank one; its inverse must be refused. In
+ * 3D its det and adjugate are both round-off, which the condition test alone can
+ * mistake for a well-conditioned matrix (seen: "condition" 8.7). */
+static void check_rank_one_refused(void)
+{
+    const double dir[3] = {0.37, -0.81, 0.29};
+    double k[FSI_MAT_SIZE], inv[FSI_MAT_SIZE];
+    fsi_mat_zero(k);
+    for (int n = -2; n <= 2; n++) {
+        if (n == 0)
+            continue;
+        double xi[FSI_DIM];
+        for (int d = 0; d < FSI_DIM; d++)
+            xi[d] = 0.01 * n * dir[d];
+        fsi_mat_add_outer(k, 1.0 / fabs((double)n), xi, xi);
+    }
+    CHECK(fsi_mat_inverse(k, inv, 1e8) == -1, "a rank-one shape tensor was inverted");
+}
+
 static void check_small_tensor(void)
 {
     double a[FSI_MAT_SIZE], inv[FSI_MAT_SIZE], prod[FSI_MAT_SIZE], id[FSI_MAT_SIZE];
@@ -356,6 +375,7 @@ static void check_update_alone(void)
 int main(void)
 {
     check_small_tensor();
+    check_rank_one_refused();
     check_shape_tensor("one");
     check_shape_tensor("inverse");
     check_shape_tensor("gaussian");
