@@ -278,6 +278,14 @@ int fsi_bus_poll(fsi_bus *b, double timeout_s)
     return lcm_handle_timeout(b->lcm, ms);
 }
 
+int fsi_bus_drain(fsi_bus *b)
+{
+    int n = 0, rc;
+    while ((rc = lcm_handle_timeout(b->lcm, 0)) > 0)
+        n++;
+    return rc < 0 ? -1 : n;
+}
+
 static void *heartbeat_loop(void *arg)
 {
     fsi_bus *b = arg;

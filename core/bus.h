@@ -56,6 +56,12 @@ int fsi_bus_request_resend(fsi_bus *b, const char *target, fsi_msg_type type, in
  * one handled, or 0 on timeout, -1 on a transport error. */
 int fsi_bus_poll(fsi_bus *b, double timeout_s);
 
+/* Handles every message already waiting, without waiting for more; returns how many,
+ * or -1 on a transport error. Liveness is judged only after this: when a process
+ * was busy (a long window, or a loaded machine that did not schedule it) the
+ * heartbeats it missed are queued, not lost. */
+int fsi_bus_drain(fsi_bus *b);
+
 /* Starts a background thread publishing heartbeat_t every interval_s seconds with the
  * window and state last set; it stops in fsi_bus_close. */
 int fsi_bus_start_heartbeat(fsi_bus *b, double interval_s);

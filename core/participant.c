@@ -261,10 +261,7 @@ static void wait_for(fsi_participant *p, ready_fn ready, request_fn request)
         /* Handle what arrived while this process computed before judging the
          * coupler's silence: after a window longer than the watchdog timeout its
          * heartbeats are queued, not missing. */
-        int polled;
-        while ((polled = fsi_bus_poll(p->bus, 0.0)) > 0 && !ready(p))
-            ;
-        if (polled < 0)
+        if (fsi_bus_drain(p->bus) < 0)
             die_with_run("LCM transport failed while waiting", FSI_EXIT_RUN_FAILURE);
         if (ready(p))
             break;

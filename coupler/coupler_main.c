@@ -239,6 +239,7 @@ static int register_participants(coupler *c)
             break;
         }
         fsi_bus_poll(c->bus, POLL_SLICE_S);
+        fsi_bus_drain(c->bus);
         check_liveness(c);
     }
     return c->failed ? -1 : 0;
@@ -284,6 +285,11 @@ static int wait_for_done(coupler *c)
         }
         if (!missing)
             return 0;
+        /* Messages that queued while this process was not scheduled (a loaded
+         * machine) count before silence is judged; what they changed is looked at
+         * again first. */
+        if (fsi_bus_drain(c->bus) > 0)
+            continue;
         check_liveness(c);
         if (c->failed)
             return -1;
