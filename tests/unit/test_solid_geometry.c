@@ -631,6 +631,37 @@ static void test_mirror_clamp(void)
     solid_particles_free(&p);
 }
 
+/* clamp_face belongs to clamp regions only, and names an axis of this build. */
+static void test_clamp_face_check(void)
+{
+    char messages[4096];
+    const char *bad = write_case(
+        "bad_face.ini",
+        "[run]\nend_time = 1\n"                                               /* 1-2 */
+        "[solid]\nsolver = testsolid\nspacing = 0.01\ndensity = 2400\n"       /* 3-6 */
+        "[solid.block beam]\nmin = 0, 0" Z(0) "\nmax = 1, 0.2" Z(0.03) "\n"  /* 7-9 */
+        "[solid.region tip]\nmin = 0.99, 0" Z(-1) "\nmax = 1, 0.2" Z(1) "\n" /* 10-12 */
+        "action = load\nforce = 0, -1" Z(0) "\nclamp_face = x_max\n");       /* 13-15 */
+    int n = load_case(bad, messages, sizeof messages, NULL);
+    CHECK(n == 1, "clamp_face on a load region: %d errors, want 1:\n%s", n, messages);
+    CHECK(contains(messages, "bad_face.ini:15: [solid.region tip] clamp_face: only a region "
+                             "with action = clamp takes a clamp_face"),
+          "clamp_face on a load region not reported at its line:\n%s", messages);
+#if FSI_DIM == 2
+    const char *z = write_case(
+        "z_face.ini",
+        "[run]\nend_time = 1\n"
+        "[solid]\nsolver = testsolid\nspacing = 0.01\ndensity = 2400\n"
+        "[solid.block beam]\nmin = 0, 0\nmax = 1, 0.2\n"
+        "[solid.region fixed]\nmin = -1, -1\nmax = 0.01, 1\naction = clamp\n"
+        "clamp_face = z_max\n");
+    n = load_case(z, messages, sizeof messages, NULL);
+    CHECK(n == 1 && contains(messages, "clamp_face: 'z_max' names an axis this 2D build does "
+                                       "not have"),
+          "z face in 2D: %d errors:\n%s", n, messages);
+#endif
+}
+
 int main(void)
 {
     make_scratch();
@@ -639,6 +670,7 @@ int main(void)
     test_mirror_clamp();
     test_mode_shape();
     test_check();
+    test_clamp_face_check();
     test_integration();
     test_interface();
     if (failures) {
