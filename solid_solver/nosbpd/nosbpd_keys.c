@@ -11,7 +11,8 @@ static const fsi_key_spec keys[] = {
      "one|inverse|gaussian",
      "Bond weight omega(|xi|) in the shape tensor, deformation gradient and force state: "
      "one (1), inverse (delta / |xi|) or gaussian (exp(-(2 |xi| / delta)^2))."},
-    {"gradient_order", FSI_KEY_INT, "-", "2", FSI_BOUND_MIN | FSI_BOUND_MAX, 1, 2, NULL,
+    {"gradient_order", FSI_KEY_INT, "-", NOSBPD_DEFAULT_GRADIENT_ORDER_TEXT,
+     FSI_BOUND_MIN | FSI_BOUND_MAX, 1, 2, NULL,
      "Order of the fit that gives the deformation gradient over a family: 1 is the "
      "linear fit of 000 Eqs. 34 and 36 (F = N K^-1); 2 adds the quadratic terms, so "
      "that F stays exact for bending-like (quadratic) motions where a surface cuts the "
