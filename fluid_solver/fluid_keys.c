@@ -50,8 +50,8 @@ static const fsi_key_spec common_keys[] = {
      "Force limit of the step: dt <= cfl_force sqrt(h / |a|max) (Monaghan 1992's 0.25)."},
     {"energy_growth_limit", FSI_KEY_REAL, "-", "2", FSI_BOUND_MIN_OPEN, 1, 0, NULL,
      "The run stops as unstable when the kinetic energy exceeds this factor times (the "
-     "initial kinetic energy + the potential energy released since the start + a floor of "
-     "1e-6 M c0^2); a stable fluid stays at or below 1 of it."},
+     "initial kinetic and compression energy + the potential energy released since the "
+     "start) plus a floor of 1e-6 M c0^2; a stable fluid stays at or below 1 of it."},
 };
 
 const fsi_key_table fsi_fluid_common_keys = {
