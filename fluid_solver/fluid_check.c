@@ -4,45 +4,15 @@
  * spacings long is an error: rounding would silently change the depth of the water,
  * and with it the hydrostatic pressure every benchmark compares. */
 #include <math.h>
-#include <stdarg.h>
 #include <string.h>
 
+#include "case_check.h"
 #include "fluid_geometry.h"
 #include "fluid_keys.h"
 
-typedef struct {
-    const fsi_case *c;
-    FILE *out;
-    int errors;
-} checker;
-
-/* The key's own line, or the section's header when the key was defaulted. */
-static const char *where(const fsi_case *c, const char *section, const char *key)
-{
-    const char *o = key ? fsi_case_origin(c, section, key) : NULL;
-    if (!o || strcmp(o, "default") == 0)
-        o = fsi_case_origin(c, section, NULL);
-    return o ? o : fsi_case_path(c);
-}
-
-static void problem(checker *k, const char *section, const char *key, const char *fmt, ...)
-    __attribute__((format(printf, 4, 5)));
-
-static void problem(checker *k, const char *section, const char *key, const char *fmt, ...)
-{
-    fprintf(k->out, "%s: [%s]%s%s: ", where(k->c, section, key), section, key ? " " : "",
-            key ? key : "");
-    va_list ap;
-    va_start(ap, fmt);
-    vfprintf(k->out, fmt, ap);
-    va_end(ap);
-    fputc('\n', k->out);
-    k->errors++;
-}
-
 static const char axis_name[3] = {'x', 'y', 'z'};
 
-static void check_box_sizes(checker *k, const fluid_geometry *g)
+static void check_box_sizes(fsi_case_checker *k, const fluid_geometry *g)
 {
     const double dx = g->spacing;
     for (int b = 0; b < g->n_boxes; b++) {
@@ -50,18 +20,22 @@ static void check_box_sizes(checker *k, const fluid_geometry *g)
         for (int d = 0; d < FSI_DIM; d++) {
             double size = box->max[d] - box->min[d], n = fluid_box_spacings(box, dx, d);
             if (size <= 0) {
-                problem(k, box->section, "max", "must exceed min along %c (min %.9g m, "
+                fsi_case_problem(k, box->section, "max", "must exceed min along %c (min %.9g m, "
                         "max %.9g m)", axis_name[d], box->min[d], box->max[d]);
             } else if (n < 1.0 - FLUID_GEOMETRY_TOL) {
-                problem(k, box->section, "max", "the box is %.6g m thick along %c, thinner "
-                        "than one spacing (%.9g m): it would hold no particle", size,
-                        axis_name[d], dx);
+                fsi_case_problem(k, box->section, "max",
+                                 "the box is %.6g m thick along %c, thinner "
+                                 "than one spacing (%.9g m): it would hold no particle",
+                                 size, axis_name[d], dx);
             } else if (fabs(n - round(n)) > FLUID_GEOMETRY_TOL * fmax(1.0, n)) {
                 double lo = floor(n), hi = ceil(n);
-                problem(k, box->section, "max", "the box is %.6g spacings long along %c; the "
-                        "lattice needs a whole number: use max = %.9g or %.9g along %c, or "
-                        "spacing = %.9g or %.9g", n, axis_name[d], box->min[d] + lo * dx,
-                        box->min[d] + hi * dx, axis_name[d], size / lo, size / hi);
+                fsi_case_problem(
+                    k, box->section, "max",
+                    "the box is %.6g spacings long along %c; the "
+                    "lattice needs a whole number: use max = %.9g or %.9g along %c, or "
+                    "spacing = %.9g or %.9g",
+                    n, axis_name[d], box->min[d] + lo * dx, box->min[d] + hi * dx, axis_name[d],
+                    size / lo, size / hi);
             }
         }
     }
@@ -69,21 +43,21 @@ static void check_box_sizes(checker *k, const fluid_geometry *g)
 
 /* Water in a wall, a wall in a wall, water in water: particles would be created twice
  * or on top of each other. */
-static void check_overlaps(checker *k, const fluid_geometry *g)
+static void check_overlaps(fsi_case_checker *k, const fluid_geometry *g)
 {
     for (int b = 0; b < g->n_boxes; b++)
         for (int a = 0; a < b; a++) {
             const fluid_box *p = &g->boxes[a], *q = &g->boxes[b];
             if (fluid_boxes_overlap(p, q) <= FLUID_GEOMETRY_TOL * g->spacing)
                 continue;
-            problem(k, q->section, NULL, "overlaps [%s] (%s): %s; let boxes touch, not "
-                    "overlap", p->section, where(k->c, p->section, NULL),
+            fsi_case_problem(k, q->section, NULL, "overlaps [%s] (%s): %s; let boxes touch, not "
+                    "overlap", p->section, fsi_case_where(k->c, p->section, NULL),
                     p->is_wall != q->is_wall ? "water inside a wall"
                                              : "particles would be created twice");
         }
 }
 
-static void check_probes(checker *k, const fluid_geometry *g)
+static void check_probes(fsi_case_checker *k, const fluid_geometry *g)
 {
     for (int q = 0; q < g->n_probes; q++) {
         int inside = 0;
@@ -91,25 +65,26 @@ static void check_probes(checker *k, const fluid_geometry *g)
             inside = !g->boxes[b].is_wall &&
                      fluid_box_contains(&g->boxes[b], g->spacing, g->probes[q].point);
         if (!inside)
-            problem(k, g->probes[q].section, "point", "lies in no [fluid.block]: a pressure "
-                    "probe must start in (or on the edge of) the water");
+            fsi_case_problem(k, g->probes[q].section, "point",
+                             "lies in no [fluid.block]: a pressure "
+                             "probe must start in (or on the edge of) the water");
     }
 }
 
-static void check_sound_speed(checker *k, const char *role)
+static void check_sound_speed(fsi_case_checker *k, const char *role)
 {
     if (fsi_case_get_real(k->c, role, "sound_speed", 0.0) > 0.0)
         return;
     if (!(fsi_case_get_real(k->c, role, "max_velocity", 0.0) > 0.0) &&
         !(fsi_case_get_real(k->c, role, "max_pressure", 0.0) > 0.0))
-        problem(k, role, "sound_speed", "is 0 (derive it from 000 Eq. 7) but neither "
+        fsi_case_problem(k, role, "sound_speed", "is 0 (derive it from 000 Eq. 7) but neither "
                 "max_velocity nor max_pressure is given: give c0 or the expected largest "
                 "velocity or pressure");
 }
 
 int fluid_geometry_check(const fsi_case *c, const char *role, FILE *errors)
 {
-    checker k = {c, errors, 0};
+    fsi_case_checker k = {c, errors, 0};
     fluid_geometry g;
     char msg[256];
     if (fluid_geometry_read(&g, c, role, msg, sizeof msg) != 0) {
@@ -120,9 +95,10 @@ int fluid_geometry_check(const fsi_case *c, const char *role, FILE *errors)
     if (k.errors == 0)
         check_overlaps(&k, &g);
     if (k.errors == 0 && fluid_geometry_lattice_size(&g) > FLUID_MAX_LATTICE)
-        problem(&k, role, "spacing", "the boxes would hold %.3g particles, more than %.3g: "
-                "use a larger spacing", fluid_geometry_lattice_size(&g),
-                (double)FLUID_MAX_LATTICE);
+        fsi_case_problem(&k, role, "spacing",
+                         "the boxes would hold %.3g particles, more than %.3g: "
+                         "use a larger spacing",
+                         fluid_geometry_lattice_size(&g), (double)FLUID_MAX_LATTICE);
     check_probes(&k, &g);
     check_sound_speed(&k, role);
     fluid_geometry_free(&g);

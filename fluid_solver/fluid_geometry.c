@@ -7,6 +7,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "case_check.h"
+
 static void read_vector(const fsi_case *c, const char *section, const char *key, double *out)
 {
     if (fsi_case_get_vector(c, section, key, out) != 0)
@@ -14,19 +16,6 @@ static void read_vector(const fsi_case *c, const char *section, const char *key,
             out[d] = 0.0;
 }
 
-/* Object sections of one kind in file order; *out is NULL when there are none. */
-static int object_sections(const fsi_case *c, const char *role, const char *kind,
-                           const char ***out)
-{
-    *out = NULL;
-    int n = fsi_case_objects(c, role, kind, NULL, 0);
-    if (n <= 0)
-        return 0;
-    *out = malloc((size_t)n * sizeof **out);
-    if (!*out)
-        return -1;
-    return fsi_case_objects(c, role, kind, *out, n);
-}
 
 static void read_box(fluid_box *b, const fsi_case *c, const char *section, double spacing,
                      int is_wall)
@@ -50,9 +39,9 @@ int fluid_geometry_read(fluid_geometry *g, const fsi_case *c, const char *role, 
     memset(g, 0, sizeof *g);
     g->spacing = fsi_case_get_real(c, role, "spacing", 0.0);
     const char **blocks = NULL, **walls = NULL, **probes = NULL;
-    int nb = object_sections(c, role, "block", &blocks);
-    int nw = object_sections(c, role, "wall", &walls);
-    int np = object_sections(c, role, "probe", &probes);
+    int nb = fsi_case_object_list(c, role, "block", &blocks);
+    int nw = fsi_case_object_list(c, role, "wall", &walls);
+    int np = fsi_case_object_list(c, role, "probe", &probes);
     int ok = nb >= 0 && nw >= 0 && np >= 0;
     if (ok && nb + nw > 0) {
         g->boxes = calloc((size_t)(nb + nw), sizeof *g->boxes);

@@ -27,6 +27,7 @@
 #include "h5_output.h"
 #include "log.h"
 #include "participant.h"
+#include "particle_health.h"
 #include "small_tensor.h"
 #include "timers.h"
 
@@ -67,13 +68,7 @@ static double *new_vector(int n, int ncomp)
 /* "(x, y)" of particle i's current position, for messages. */
 static const char *where_text(const fluid_run *s, int i, char *buf, size_t size)
 {
-    int len = snprintf(buf, size, "(");
-    for (int d = 0; d < FSI_DIM && len < (int)size; d++)
-        len += snprintf(buf + len, size - (size_t)len, "%s%.6g", d ? ", " : "",
-                        s->p.x[i * FSI_DIM + d]);
-    if (len < (int)size)
-        snprintf(buf + len, size - (size_t)len, ")");
-    return buf;
+    return fsi_point_text(&s->p.x[i * FSI_DIM], buf, size);
 }
 
 static void free_run(fluid_run *s)
@@ -189,28 +184,6 @@ static int write_static(fluid_run *s)
     return rc ? -1 : 0;
 }
 
-static void set_escape_box(fluid_run *s)
-{
-    const fluid_particles *p = &s->p;
-    for (int d = 0; d < FSI_DIM; d++) {
-        s->box_min[d] = INFINITY;
-        s->box_max[d] = -INFINITY;
-    }
-    for (int i = 0; i < p->n; i++)
-        for (int d = 0; d < FSI_DIM; d++) {
-            s->box_min[d] = fmin(s->box_min[d], p->x[i * FSI_DIM + d]);
-            s->box_max[d] = fmax(s->box_max[d], p->x[i * FSI_DIM + d]);
-        }
-    double diag = 0.0;
-    for (int d = 0; d < FSI_DIM; d++)
-        diag += (s->box_max[d] - s->box_min[d]) * (s->box_max[d] - s->box_min[d]);
-    diag = fmax(sqrt(diag), p->spacing);
-    for (int d = 0; d < FSI_DIM; d++) {
-        s->box_min[d] -= ESCAPE_DIAGONALS * diag;
-        s->box_max[d] += ESCAPE_DIAGONALS * diag;
-    }
-}
-
 /* Rates at the current state into drho, accel. */
 static int evaluate(fluid_run *s)
 {
@@ -265,7 +238,7 @@ static int setup(fluid_run *s, fsi_participant *part)
         hydrostatic_start(s);
     if (fluid_probes_init(&s->probes, &s->geometry, part, s->msg, ms) != 0)
         return -1;
-    set_escape_box(s);
+    fsi_escape_box(p->x, p->n, ESCAPE_DIAGONALS, p->spacing, s->box_min, s->box_max);
     if (evaluate(s) != 0)
         return -1;
 
@@ -405,20 +378,15 @@ static int advance(fluid_run *s, double t0, double dt, int window)
 static int check_health(fluid_run *s, double t, int window)
 {
     const fluid_particles *p = &s->p;
-    for (int i = 0; i < p->n; i++) {
-        if (!(p->flags[i] & FLUID_PARTICLE_FLUID))
-            continue;
-        for (int d = 0; d < FSI_DIM; d++) {
-            double x = p->x[i * FSI_DIM + d];
-            if (x < s->box_min[d] || x > s->box_max[d]) {
-                char at[128];
-                snprintf(s->msg, sizeof s->msg, "particle %d left the domain: at %s, more than "
-                         "%g diagonals outside the initial box of water and walls, at "
-                         "t = %.9g s (window %d)", p->id[i], where_text(s, i, at, sizeof at),
-                         ESCAPE_DIAGONALS, t, window);
-                return -1;
-            }
-        }
+    /* Wall particles never move: only fluid particles can leave. */
+    const int i = fsi_outside_box(p->x, p->n, s->box_min, s->box_max);
+    if (i >= 0) {
+        char at[128];
+        snprintf(s->msg, sizeof s->msg, "particle %d left the domain: at %s, more than %g "
+                 "diagonals outside the initial box of water and walls, at t = %.9g s "
+                 "(window %d)", p->id[i], where_text(s, i, at, sizeof at), ESCAPE_DIAGONALS,
+                 t, window);
+        return -1;
     }
     /* Without inflow K + P + E_c = K0 + P0 + E_c0 - (dissipation), with the potential
      * energy P and the compression energy E_c >= 0, so K(t) <= K0 + E_c0 + (P0 - P(t));
@@ -427,26 +395,18 @@ static int check_health(fluid_run *s, double t, int window)
                                                    potential_energy(p, s->props.gravity);
     double budget = fmax(s->kinetic0 + s->compression0 + released, 0.0);
     if (!isfinite(kinetic) || kinetic > s->energy_limit * budget + s->energy_floor) {
-        int fastest = 0;
-        double v2max = -1.0;
-        for (int i = 0; i < p->n; i++) {
-            if (!(p->flags[i] & FLUID_PARTICLE_FLUID))
-                continue;
-            double v2 = fsi_vec_dot(&p->v[i * FSI_DIM], &p->v[i * FSI_DIM]);
-            if (v2 > v2max || !isfinite(v2)) {
-                v2max = v2;
-                fastest = i;
-                if (!isfinite(v2))
-                    break;
-            }
-        }
+        /* Wall particles are at rest: the fastest particle is a fluid one. */
+        double speed;
+        const int fastest = fsi_fastest(p->v, p->n, &speed);
         char at[128];
-        snprintf(s->msg, sizeof s->msg, "kinetic energy grew to %.6g J, more than "
+        snprintf(s->msg, sizeof s->msg,
+                 "kinetic energy grew to %.6g J, more than "
                  "energy_growth_limit = %g times the initial kinetic and compression energy "
-                 "plus the potential energy released (%.6g J) plus the floor %.3g J; fastest: particle %d at %s "
+                 "plus the potential energy released (%.6g J) plus the floor %.3g J; fastest: "
+                 "particle %d at %s "
                  "at %.3g m/s; at t = %.9g s (window %d): the integration is unstable",
                  kinetic, s->energy_limit, budget, s->energy_floor, p->id[fastest],
-                 where_text(s, fastest, at, sizeof at), sqrt(v2max), t, window);
+                 where_text(s, fastest, at, sizeof at), speed, t, window);
         return -1;
     }
     return 0;

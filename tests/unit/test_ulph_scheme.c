@@ -81,7 +81,8 @@ static void test_eos(void)
     const double pressures[] = {-1e5, -1000.0, 0.0, 4905.0, 1e5, 1e7};
     for (size_t i = 0; i < sizeof pressures / sizeof pressures[0]; i++) {
         double rho = ulph_eos_density(&e, pressures[i]);
-        CHECK(fabs(ulph_eos_pressure(&e, rho) - pressures[i]) < 1e-9 * fmax(1.0, fabs(pressures[i])),
+        CHECK(fabs(ulph_eos_pressure(&e, rho) - pressures[i]) <
+                  1e-9 * fmax(1.0, fabs(pressures[i])),
               "EOS round trip at p = %g: %g", pressures[i], ulph_eos_pressure(&e, rho));
     }
     CHECK(ulph_eos_pressure(&e, 1000.0) == 0.0, "p(rho0) = 0");
