@@ -8,7 +8,8 @@
 #   - the largest fluid particle speed below 1 % of sqrt(g H) = 2.215 m/s;
 #   - no fluid particle outside the tank (0 < x < 1, y > 0) in any frame;
 #   - nothing non-finite in any frame.
-# Also a fluid-only case runs through `fsi run` like a solid-only one (no [solid]).
+# Also a fluid-only case runs through `fsi run` like a solid-only one (no [solid]), and
+# 1 and 2 OpenMP threads give the same results bit for bit (a short run).
 source "$(dirname "$0")/lib.sh"
 PY=/usr/bin/python3
 
@@ -53,3 +54,11 @@ ok = ok and vmax < bound and abs(t - 2.0) < 1e-9
 sys.exit(0 if ok else 1)
 PY
 pass "F0: bottom pressure within 1 % of rho0 g H, speed below 1 % of sqrt(g H), every particle in the tank at t = 2 s"
+
+for threads in 1 2; do
+  "$FSI_RUN" "$FSI_SOURCE_DIR/cases/f0_hydrostatic_tank.ini" --out "threads$threads" \
+    --threads "$threads" --set run.end_time=0.05 --set run.output_interval=0.01 \
+    >"threads$threads.txt" 2>&1 || { cat "threads$threads.txt"; fail "run on $threads thread(s) failed"; }
+done
+same_results threads1 threads2
+pass "1 and 2 threads: fluid.h5 and probes.csv identical"
