@@ -7,7 +7,10 @@
  *  - pairwise momentum conservation of Eq. 23 with viscosity: sum m dv/dt = M g to
  *    round-off for random velocities and pressures on a jittered lattice;
  *  - continuity (000 Eq. 16): a uniform velocity leaves the density unchanged, a linear
- *    expansion u = e x gives drho/dt = -rho e (DIM e for the divergence) everywhere. */
+ *    expansion u = e x gives drho/dt = -rho e (DIM e for the divergence) everywhere;
+ *  - the velocity walls show the viscous stress: fluid sliding at U over a no-slip wall
+ *    makes the wall particles show -U (000 Eqs. 50-51: 2 * 0 - U), over a free-slip wall
+ *    +U (no shear). */
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -153,6 +156,30 @@ static void test_hydrostatic(void)
     CHECK(worst < 0.1 * g, "hydrostatic column not in equilibrium: |a| = %g g", worst / g);
     CHECK(worst_inside < 1e-9 * g, "hydrostatic column not in equilibrium away from the "
           "walls: |a| = %g g", worst_inside / g);
+
+    /* The fluid slides along x at U: walls with fluid neighbours show -U (no-slip) or
+     * +U (free-slip) along x and 0 across. */
+    const double U = 0.7;
+    unsigned char *free_slip = calloc((size_t)p->n, 1);
+    for (int i = 0; i < p->n; i++)
+        if (p->flags[i] & FLUID_PARTICLE_FLUID)
+            p->v[i * 2] = U;
+    for (int slip = 0; slip < 2; slip++) {
+        for (int i = 0; i < p->n; i++)
+            free_slip[i] = (unsigned char)slip;
+        ulph_walls_update(&s.ops, &e, gravity, free_slip, p, s.vv);
+        double worst_v = 0.0;
+        int walls_seen = 0;
+        for (int i = 0; i < p->n; i++) {
+            if (!(p->flags[i] & FLUID_PARTICLE_WALL) || p->pressure[i] == 0.0)
+                continue;
+            walls_seen++;
+            worst_v = fmax(worst_v, fabs(s.vv[i * 2] - (slip ? U : -U)) + fabs(s.vv[i * 2 + 1]));
+        }
+        CHECK(walls_seen > 0 && worst_v < 1e-12, "%s wall: velocity shown off by %g m/s",
+              slip ? "free-slip" : "no-slip", worst_v);
+    }
+    free(free_slip);
     scene_free(&s);
 }
 #endif
