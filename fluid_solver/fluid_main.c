@@ -169,14 +169,22 @@ static void hydrostatic_start(fluid_run *s)
     }
 }
 
+/* The kind flags as the int32 the HDF5 output takes (a new array, or NULL). */
+static int32_t *flags_as_int32(const fluid_particles *p)
+{
+    int32_t *flags = malloc((size_t)(p->n > 0 ? p->n : 1) * sizeof *flags);
+    if (flags)
+        for (int i = 0; i < p->n; i++)
+            flags[i] = p->flags[i];
+    return flags;
+}
+
 static int write_static(fluid_run *s)
 {
     const fluid_particles *p = &s->p;
-    int32_t *flags = malloc((size_t)p->n * sizeof *flags);
+    int32_t *flags = flags_as_int32(p);
     if (!flags)
         return -1;
-    for (int i = 0; i < p->n; i++)
-        flags[i] = p->flags[i];
     int rc = fsi_h5_write_static_int(s->out, "id", p->id, p->n, 1) |
              fsi_h5_write_static_real(s->out, "x0", p->x, p->n, FSI_DIM) |
              fsi_h5_write_static_int(s->out, "flags", flags, p->n, 1);
@@ -415,11 +423,9 @@ static int check_health(fluid_run *s, double t, int window)
 static int write_frame(fluid_run *s, int frame, double t, long window)
 {
     const fluid_particles *p = &s->p;
-    int32_t *flags = malloc((size_t)p->n * sizeof *flags);
+    int32_t *flags = flags_as_int32(p);
     if (!flags)
         return -1;
-    for (int i = 0; i < p->n; i++)
-        flags[i] = p->flags[i];
     int rc = fsi_h5_begin_frame(s->out, frame, t, window, p->n, p->x) != 0 ||
              fsi_h5_write_field_real(s->out, "velocity", p->v, FSI_DIM) != 0 ||
              fsi_h5_write_field_real(s->out, "acceleration", s->accel, FSI_DIM) != 0 ||
