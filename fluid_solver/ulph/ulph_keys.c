@@ -17,7 +17,8 @@ static const fsi_key_spec keys[] = {
      "0.5, 0.02 for the dam break of §4.2); 0 turns it off."},
     {"density_filter_interval", FSI_KEY_INT, "-", "20", FSI_BOUND_MIN, 0, 0, NULL,
      "Every this many steps the density is reset to the Shepard average of 000 Eq. 24 "
-     "(000: every 20 steps); 0 turns the filter off."},
+     "with a first-order correction that keeps a linear density field (docs/ulph.md; "
+     "000: every 20 steps); 0 turns the filter off."},
 };
 
 const fsi_key_table fsi_ulph_keys = {

@@ -4,7 +4,8 @@
  *      with V = m / rho (ulph_operators);
  *   2. pressure of every fluid particle from its density (Tait, 000 Eq. 6);
  *   3. wall particles from the fluid around them (000 Eqs. 50-54, ulph_walls);
- *   4. when a density filter is due (every density_filter_interval steps, 000 Eq. 24),
+ *   4. when a density filter is due (every density_filter_interval steps, 000 Eq. 24
+ *      with a first-order correction, density_filter below),
  *      the filtered density, then 2-3 again;
  *   5. continuity and momentum (000 Eqs. 16, 23-28, ulph_momentum). */
 #include <math.h>
@@ -29,7 +30,7 @@ struct fluid_scheme {
     ulph_operators ops;
     ulph_momentum_scratch scratch;
     const unsigned char *free_slip;
-    double *velocity_for_viscosity, *filtered;
+    double *velocity_for_viscosity, *filtered, *density_gradient;
     double cfl_acoustic, cfl_viscous, cfl_force;
     long filter_interval;
     int filter_due;
@@ -69,7 +70,8 @@ fluid_scheme *fluid_scheme_create(const fsi_case *c, const char *role,
     const size_t n = (size_t)(p->n > 0 ? p->n : 1);
     s->velocity_for_viscosity = malloc(n * FSI_DIM * sizeof(double));
     s->filtered = malloc(n * sizeof(double));
-    if (!s->velocity_for_viscosity || !s->filtered ||
+    s->density_gradient = malloc(n * FSI_DIM * sizeof(double));
+    if (!s->velocity_for_viscosity || !s->filtered || !s->density_gradient ||
         ulph_momentum_reserve(&s->scratch, p->n) != 0) {
         fluid_scheme_free(s);
         snprintf(msg, msg_size, "out of memory for the ULPH scheme of %d particles", p->n);
@@ -87,6 +89,7 @@ void fluid_scheme_free(fluid_scheme *s)
     ulph_momentum_free(&s->scratch);
     free(s->velocity_for_viscosity);
     free(s->filtered);
+    free(s->density_gradient);
     free(s);
 }
 
@@ -116,26 +119,40 @@ static void fluid_state(const fluid_scheme *s, fluid_particles *p)
         }
 }
 
-/* 000 Eq. 24: rho_I = sum_J w_IJ m_J / sum_J w_IJ V_J over I and its neighbours (walls
- * included, with the mass of 000 Eq. 54): a Shepard average that returns a uniform
- * density unchanged, also where the support is cut at the free surface. */
+/* 000 Eq. 24, rho_I = sum_J w_IJ m_J / sum_J w_IJ V_J over I and its neighbours (walls
+ * included, with the mass of 000 Eq. 54), with a first-order correction:
+ *
+ *     rho_I = sum_J w_IJ V_J (rho_J - grad rho_I . x_IJ) / sum_J w_IJ V_J
+ *
+ * (grad rho_I from 000 Eq. 13). Without the correction the Shepard average of a
+ * particle whose family is cut by the free surface is taken over deeper, denser
+ * particles: in a hydrostatic column (drho/dy = -rho0 g / c0^2) it raises the top row's
+ * density by about a spacing's worth, p by ~ rho0 g dx, twice the row's own pressure,
+ * and every filter kicks the surface. The corrected average returns any linear density
+ * field unchanged (inside, at the surface, at walls) and still removes the
+ * lattice-scale noise Eq. 24 is for. */
 static void density_filter(fluid_scheme *s, fluid_particles *p)
 {
     const int n = p->n;
     const ulph_operators *ops = &s->ops;
     const double w0 = ulph_kernel_w2(&s->kernel, 0.0);
+    ulph_gradient_scalar(ops, p->density, s->density_gradient);
 #pragma omp parallel for schedule(static) if (n >= ULPH_PARALLEL_MIN_PARTICLES)
     for (int i = 0; i < n; i++) {
         s->filtered[i] = p->density[i];
         if (!(p->flags[i] & FLUID_PARTICLE_FLUID))
             continue;
+        const double *grad = &s->density_gradient[i * FSI_DIM];
         double wm = w0 * p->mass[i], wv = w0 * p->volume[i];
         for (int64_t k = ops->offset[i]; k < ops->offset[i + 1]; k++) {
             const int j = ops->neighbour[k];
-            if (p->flags[j] & (FLUID_PARTICLE_FLUID | FLUID_PARTICLE_WALL)) {
-                wm += ops->w[k] * p->mass[j];
-                wv += ops->w[k] * p->volume[j];
-            }
+            if (!(p->flags[j] & (FLUID_PARTICLE_FLUID | FLUID_PARTICLE_WALL)))
+                continue;
+            double shift = 0.0;
+            for (int d = 0; d < FSI_DIM; d++)
+                shift += grad[d] * (p->x[j * FSI_DIM + d] - p->x[i * FSI_DIM + d]);
+            wm += ops->w[k] * (p->mass[j] - p->volume[j] * shift);
+            wv += ops->w[k] * p->volume[j];
         }
         s->filtered[i] = wm / wv;
     }
