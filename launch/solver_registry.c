@@ -3,10 +3,12 @@
 #include <string.h>
 
 #include "example_keys.h"
+#include "fluid_keys.h"
 #include "material.h"
 #include "nosbpd_keys.h"
 #include "run_keys.h"
 #include "solid_keys.h"
+#include "ulph_keys.h"
 
 static const fsi_key_spec participant_keys[] = {
     {"solver", FSI_KEY_STRING, "-", NULL, 0, 0, 0, NULL,
@@ -30,6 +32,8 @@ static const fsi_key_table *const dashpot_tables[] = {&fsi_dashpot_fluid_keys};
 static const fsi_key_table *const nosbpd_tables[] = {&fsi_solid_common_keys,
                                                      &material_key_table, &fsi_nosbpd_keys};
 
+static const fsi_key_table *const ulph_tables[] = {&fsi_fluid_common_keys, &fsi_ulph_keys};
+
 #define N_TABLES(a) ((int)(sizeof(a) / sizeof((a)[0])))
 
 /* Every solid model's semantic check: the geometry, then the material's cross-key
@@ -52,6 +56,12 @@ static const fsi_solver_spec solvers[] = {
      "(solid_solver/nosbpd, docs/nosbpd.md).",
      nosbpd_tables, N_TABLES(nosbpd_tables), fsi_solid_object_kinds, FSI_SOLID_N_OBJECT_KINDS,
      solid_model_check},
+    {"ulph", "fluid", "fsi-fluid-ulph",
+     "Updated Lagrangian Particle Hydrodynamics, a weakly compressible fluid with "
+     "non-local operators, fixed ghost walls and predictor-corrector stepping (seed 000 "
+     "section 2.1, fluid_solver/ulph, docs/ulph.md).",
+     ulph_tables, N_TABLES(ulph_tables), fsi_fluid_object_kinds, FSI_FLUID_N_OBJECT_KINDS,
+     fluid_geometry_check},
 };
 
 static const fsi_case_schema schema = {

@@ -6,6 +6,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "case_check.h"
+
 static int read_vector(const fsi_case *c, const char *section, const char *key, double *out)
 {
     if (fsi_case_get_vector(c, section, key, out) == 0)
@@ -24,19 +26,6 @@ static solid_region_action action_of(const char *word)
     return SOLID_REGION_CLAMP;
 }
 
-/* Object sections of one kind in file order; *out is NULL when there are none. */
-static int object_sections(const fsi_case *c, const char *role, const char *kind,
-                           const char ***out)
-{
-    *out = NULL;
-    int n = fsi_case_objects(c, role, kind, NULL, 0);
-    if (n <= 0)
-        return 0;
-    *out = malloc((size_t)n * sizeof **out);
-    if (!*out)
-        return -1;
-    return fsi_case_objects(c, role, kind, *out, n);
-}
 
 int solid_geometry_read(solid_geometry *g, const fsi_case *c, const char *role, char *msg,
                         size_t msg_size)
@@ -44,9 +33,9 @@ int solid_geometry_read(solid_geometry *g, const fsi_case *c, const char *role, 
     memset(g, 0, sizeof *g);
     g->spacing = fsi_case_get_real(c, role, "spacing", 0.0);
     const char **blocks = NULL, **regions = NULL, **probes = NULL;
-    int nb = object_sections(c, role, "block", &blocks);
-    int nr = object_sections(c, role, "region", &regions);
-    int np = object_sections(c, role, "probe", &probes);
+    int nb = fsi_case_object_list(c, role, "block", &blocks);
+    int nr = fsi_case_object_list(c, role, "region", &regions);
+    int np = fsi_case_object_list(c, role, "probe", &probes);
     if (nb < 0 || nr < 0 || np < 0)
         goto out_of_memory;
     g->blocks = nb ? calloc((size_t)nb, sizeof *g->blocks) : NULL;

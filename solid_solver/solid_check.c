@@ -8,43 +8,12 @@
  * which shifts exactly the frequencies and deflections the benchmarks compare; the
  * message proposes the nearest sizes and the spacing that fit instead. */
 #include <math.h>
-#include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include "case_check.h"
 #include "geometry.h"
 #include "solid_keys.h"
-
-typedef struct {
-    const fsi_case *c;
-    FILE *out;
-    int errors;
-} checker;
-
-/* Where a problem is: the key's own line, or the section's header when the key
- * was defaulted or is absent. */
-static const char *where(const fsi_case *c, const char *section, const char *key)
-{
-    const char *o = key ? fsi_case_origin(c, section, key) : NULL;
-    if (!o || strcmp(o, "default") == 0)
-        o = fsi_case_origin(c, section, NULL);
-    return o ? o : fsi_case_path(c);
-}
-
-static void problem(checker *k, const char *section, const char *key, const char *fmt, ...)
-    __attribute__((format(printf, 4, 5)));
-
-static void problem(checker *k, const char *section, const char *key, const char *fmt, ...)
-{
-    fprintf(k->out, "%s: [%s]%s%s: ", where(k->c, section, key), section, key ? " " : "",
-            key ? key : "");
-    va_list ap;
-    va_start(ap, fmt);
-    vfprintf(k->out, fmt, ap);
-    va_end(ap);
-    fputc('\n', k->out);
-    k->errors++;
-}
 
 static const char axis_name[3] = {'x', 'y', 'z'};
 
@@ -54,7 +23,7 @@ static int given(const fsi_case *c, const char *section, const char *key)
     return o && strcmp(o, "default") != 0;
 }
 
-static void check_blocks(checker *k, const solid_geometry *g)
+static void check_blocks(fsi_case_checker *k, const solid_geometry *g)
 {
     double dx = g->spacing;
     for (int b = 0; b < g->n_blocks; b++) {
@@ -63,16 +32,16 @@ static void check_blocks(checker *k, const solid_geometry *g)
             double n = solid_block_spacings(blk, dx, d);
             double size = blk->max[d] - blk->min[d];
             if (size <= 0) {
-                problem(k, blk->section, "max",
+                fsi_case_problem(k, blk->section, "max",
                         "must exceed min along %c (min %.9g m, max %.9g m)", axis_name[d],
                         blk->min[d], blk->max[d]);
             } else if (n < 1.0 - SOLID_GEOMETRY_TOL) {
-                problem(k, blk->section, "max",
+                fsi_case_problem(k, blk->section, "max",
                         "the block is %.6g m thick along %c, thinner than one spacing "
                         "(%.9g m): it would hold no particle", size, axis_name[d], dx);
             } else if (fabs(n - round(n)) > SOLID_GEOMETRY_TOL * fmax(1.0, n)) {
                 double lo = floor(n), hi = ceil(n);
-                problem(k, blk->section, "max",
+                fsi_case_problem(k, blk->section, "max",
                         "the block is %.6g spacings long along %c; the lattice needs a whole "
                         "number: use max = %.9g or %.9g along %c, or spacing = %.9g "
                         "(%.0f points) or %.9g (%.0f points)",
@@ -90,42 +59,51 @@ static void check_blocks(checker *k, const solid_geometry *g)
                 len += snprintf(box + len, sizeof box - (size_t)len, "%s%c %.6g..%.6g",
                                 d ? ", " : "", axis_name[d], fmax(other->min[d], blk->min[d]),
                                 fmin(other->max[d], blk->max[d]));
-            problem(k, blk->section, NULL,
+            fsi_case_problem(k, blk->section, NULL,
                     "overlaps [%s] (%s) in %s: points would be created twice; let blocks "
                     "touch, not overlap", other->section,
-                    where(k->c, other->section, NULL), box);
+                    fsi_case_where(k->c, other->section, NULL), box);
         }
     }
 }
 
-static void check_regions(checker *k, const solid_geometry *g)
+static void check_regions(fsi_case_checker *k, const solid_geometry *g)
 {
     static const char *const action_word[] = {"clamp", "load", "remove"};
     for (int r = 0; r < g->n_regions; r++) {
         const solid_region *reg = &g->regions[r];
         for (int d = 0; d < FSI_DIM; d++)
             if (reg->min[d] > reg->max[d])
-                problem(k, reg->section, "max", "is below min along %c (min %.9g, max %.9g)",
-                        axis_name[d], reg->min[d], reg->max[d]);
+                fsi_case_problem(k, reg->section, "max",
+                                 "is below min along %c (min %.9g, max %.9g)", axis_name[d],
+                                 reg->min[d], reg->max[d]);
         if (reg->action == SOLID_REGION_LOAD) {
             if (!given(k->c, reg->section, "force"))
-                problem(k, reg->section, "force", "action = load needs the total force");
+                fsi_case_problem(k, reg->section, "force", "action = load needs the total force");
         } else {
             if (given(k->c, reg->section, "force"))
-                problem(k, reg->section, "force", "only a region with action = load takes a "
-                        "force (this one has action = %s)", action_word[reg->action]);
+                fsi_case_problem(k, reg->section, "force",
+                                 "only a region with action = load takes a "
+                                 "force (this one has action = %s)",
+                                 action_word[reg->action]);
             if (given(k->c, reg->section, "ramp_time"))
-                problem(k, reg->section, "ramp_time", "only a region with action = load takes "
-                        "a ramp_time (this one has action = %s)", action_word[reg->action]);
+                fsi_case_problem(k, reg->section, "ramp_time",
+                                 "only a region with action = load takes "
+                                 "a ramp_time (this one has action = %s)",
+                                 action_word[reg->action]);
         }
         const char *face = fsi_case_get(k->c, reg->section, "clamp_face");
         if (given(k->c, reg->section, "clamp_face") && face) {
             if (reg->action != SOLID_REGION_CLAMP)
-                problem(k, reg->section, "clamp_face", "only a region with action = clamp takes "
-                        "a clamp_face (this one has action = %s)", action_word[reg->action]);
+                fsi_case_problem(k, reg->section, "clamp_face",
+                                 "only a region with action = clamp takes "
+                                 "a clamp_face (this one has action = %s)",
+                                 action_word[reg->action]);
             else if (solid_clamp_face_parse(face) < -1)
-                problem(k, reg->section, "clamp_face", "'%s' names an axis this %dD build does "
-                        "not have", face, FSI_DIM);
+                fsi_case_problem(k, reg->section, "clamp_face",
+                                 "'%s' names an axis this %dD build does "
+                                 "not have",
+                                 face, FSI_DIM);
         }
     }
 }
@@ -133,7 +111,7 @@ static void check_regions(checker *k, const solid_geometry *g)
 /* Walks every lattice point once: how many points each region selects (remove
  * regions: how many they remove; others: how many surviving points they hold),
  * how many survive, and the nearest surviving point of each probe. */
-static void count_selections(checker *k, const solid_geometry *g)
+static void count_selections(fsi_case_checker *k, const solid_geometry *g)
 {
     long *selected = calloc((size_t)g->n_regions + 1, sizeof *selected);
     double *nearest = malloc(((size_t)g->n_probes + 1) * sizeof *nearest);
@@ -178,13 +156,14 @@ static void count_selections(checker *k, const solid_geometry *g)
         }
     }
     if (survivors == 0 && g->n_blocks > 0) {
-        problem(k, g->blocks[0].section, NULL, "the solid has no particles: every block is "
-                "empty or removed");
+        fsi_case_problem(k, g->blocks[0].section, NULL,
+                         "the solid has no particles: every block is "
+                         "empty or removed");
         goto done;
     }
     for (int r = 0; r < g->n_regions; r++)
         if (selected[r] == 0)
-            problem(k, g->regions[r].section, NULL,
+            fsi_case_problem(k, g->regions[r].section, NULL,
                     g->regions[r].action == SOLID_REGION_REMOVE
                         ? "removes no particle: no lattice point (at min + (i + 1/2) spacing "
                           "in each block) lies in its box"
@@ -198,7 +177,7 @@ static void count_selections(checker *k, const solid_geometry *g)
             for (int d = 0; d < FSI_DIM; d++)
                 len += snprintf(at + len, sizeof at - (size_t)len, "%s%.6g", d ? ", " : "",
                                 nearest_x[q][d]);
-            problem(k, g->probes[q].section, "point",
+            fsi_case_problem(k, g->probes[q].section, "point",
                     "is %.6g m from the nearest particle (at %s), more than one spacing: a "
                     "probe must lie on the solid", dist, at);
         }
@@ -209,19 +188,19 @@ done:
     free(nearest_x);
 }
 
-static void check_mode(checker *k, const char *role)
+static void check_mode(fsi_case_checker *k, const char *role)
 {
     const char *iv = fsi_case_get(k->c, role, "initial_velocity");
     if (iv && strcmp(iv, "cantilever_mode") == 0 &&
         !(fsi_case_get_real(k->c, role, "mode_length", 0.0) > 0.0))
-        problem(k, role, "mode_length",
+        fsi_case_problem(k, role, "mode_length",
                 "initial_velocity = cantilever_mode needs the length from the clamp to the "
                 "free end (> 0)");
 }
 
 int solid_geometry_check(const fsi_case *c, const char *role, FILE *errors)
 {
-    checker k = {c, errors, 0};
+    fsi_case_checker k = {c, errors, 0};
     solid_geometry g;
     char msg[256];
     if (solid_geometry_read(&g, c, role, msg, sizeof msg) != 0) {
@@ -231,9 +210,10 @@ int solid_geometry_check(const fsi_case *c, const char *role, FILE *errors)
     check_blocks(&k, &g);
     check_regions(&k, &g);
     if (k.errors == 0 && solid_geometry_lattice_size(&g) > SOLID_MAX_LATTICE)
-        problem(&k, role, "spacing", "the blocks would hold %.3g lattice points, more than "
-                "%.3g: use a larger spacing", solid_geometry_lattice_size(&g),
-                (double)SOLID_MAX_LATTICE);
+        fsi_case_problem(&k, role, "spacing",
+                         "the blocks would hold %.3g lattice points, more than "
+                         "%.3g: use a larger spacing",
+                         solid_geometry_lattice_size(&g), (double)SOLID_MAX_LATTICE);
     /* Counting on blocks of the wrong size or with inverted boxes would only repeat
      * those errors as "selects no particle". */
     if (k.errors == 0)

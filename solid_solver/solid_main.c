@@ -27,6 +27,7 @@
 #include "log.h"
 #include "material.h"
 #include "participant.h"
+#include "particle_health.h"
 #include "solid_integrate.h"
 #include "solid_interface.h"
 #include "solid_loads.h"
@@ -71,13 +72,7 @@ static double *new_vector(int n, int ncomp)
 /* "(x, y)" of particle i's reference position, for messages. */
 static const char *where_text(const solid_run *s, int i, char *buf, size_t size)
 {
-    int len = snprintf(buf, size, "(");
-    for (int d = 0; d < FSI_DIM && len < (int)size; d++)
-        len += snprintf(buf + len, size - (size_t)len, "%s%.6g", d ? ", " : "",
-                        s->p.x0[i * FSI_DIM + d]);
-    if (len < (int)size)
-        snprintf(buf + len, size - (size_t)len, ")");
-    return buf;
+    return fsi_point_text(&s->p.x0[i * FSI_DIM], buf, size);
 }
 
 static void free_run(solid_run *s)
@@ -181,23 +176,7 @@ static int setup(solid_run *s, fsi_participant *part)
     s->energy_floor = 1e-12 * mass * c_wave * c_wave;
     s->energy0 = solid_kinetic_energy(p) + solid_model_strain_energy(s->model, p);
 
-    for (int d = 0; d < FSI_DIM; d++) {
-        s->box_min[d] = INFINITY;
-        s->box_max[d] = -INFINITY;
-    }
-    for (int i = 0; i < p->n; i++)
-        for (int d = 0; d < FSI_DIM; d++) {
-            s->box_min[d] = fmin(s->box_min[d], p->x0[i * FSI_DIM + d]);
-            s->box_max[d] = fmax(s->box_max[d], p->x0[i * FSI_DIM + d]);
-        }
-    double diag = 0.0;
-    for (int d = 0; d < FSI_DIM; d++)
-        diag += (s->box_max[d] - s->box_min[d]) * (s->box_max[d] - s->box_min[d]);
-    diag = fmax(sqrt(diag), p->spacing);
-    for (int d = 0; d < FSI_DIM; d++) {
-        s->box_min[d] -= ESCAPE_DIAGONALS * diag;
-        s->box_max[d] += ESCAPE_DIAGONALS * diag;
-    }
+    fsi_escape_box(p->x0, p->n, ESCAPE_DIAGONALS, p->spacing, s->box_min, s->box_max);
 
     s->out = fsi_h5_create(fsi_output_dir(part), fsi_participant_name(part),
                            fsi_case_get(c, ROLE, "solver"));
@@ -336,18 +315,14 @@ static int advance(solid_run *s, double t0, double dt, int window)
 static int check_health(solid_run *s, double t, int window)
 {
     const solid_particles *p = &s->p;
-    for (int i = 0; i < p->n; i++)
-        for (int d = 0; d < FSI_DIM; d++) {
-            double x = p->x[i * FSI_DIM + d];
-            if (x < s->box_min[d] || x > s->box_max[d]) {
-                char at[128];
-                snprintf(s->msg, sizeof s->msg, "particle %d %s left the domain (more than "
-                         "%g body diagonals from the solid's initial box) at t = %.9g s "
-                         "(window %d)", p->id[i], where_text(s, i, at, sizeof at),
-                         ESCAPE_DIAGONALS, t, window);
-                return -1;
-            }
-        }
+    const int i = fsi_outside_box(p->x, p->n, s->box_min, s->box_max);
+    if (i >= 0) {
+        char at[128];
+        snprintf(s->msg, sizeof s->msg, "particle %d %s left the domain (more than %g body "
+                 "diagonals from the solid's initial box) at t = %.9g s (window %d)",
+                 p->id[i], where_text(s, i, at, sizeof at), ESCAPE_DIAGONALS, t, window);
+        return -1;
+    }
     /* Physically E(t) = E0 + W(t) - D(t) with dissipation D >= 0 (damping, plastic
      * flow, broken bonds), so E(t) <= E0 + W_in(t), the gross work put in. An
      * unstable integration creates energy from nothing. */
@@ -356,26 +331,15 @@ static int check_health(solid_run *s, double t, int window)
     double energy = kinetic + strain, budget = s->energy0 + s->work_in;
     if (!isfinite(energy) || energy > s->energy_limit * budget + s->energy_floor) {
         /* Name the fastest particle: where the instability is growing. */
-        int fastest = 0;
-        double v2max = -1.0;
-        for (int i = 0; i < p->n; i++) {
-            double v2 = 0.0;
-            for (int d = 0; d < FSI_DIM; d++)
-                v2 += p->v[i * FSI_DIM + d] * p->v[i * FSI_DIM + d];
-            if (v2 > v2max || !isfinite(v2)) {
-                v2max = v2;
-                fastest = i;
-                if (!isfinite(v2))
-                    break;
-            }
-        }
+        double speed;
+        const int fastest = fsi_fastest(p->v, p->n, &speed);
         char at[128];
         snprintf(s->msg, sizeof s->msg, "energy grew to %.6g J (kinetic %.6g, strain %.6g), "
                  "%.3g times the initial energy plus the work put in (%.6g J), above "
                  "energy_growth_limit = %g; fastest: particle %d %s at %.3g m/s; at "
                  "t = %.9g s (window %d): the integration is unstable", energy, kinetic,
                  strain, budget > 0 ? energy / budget : INFINITY, budget, s->energy_limit,
-                 p->id[fastest], where_text(s, fastest, at, sizeof at), sqrt(v2max), t,
+                 p->id[fastest], where_text(s, fastest, at, sizeof at), speed, t,
                  window);
         return -1;
     }

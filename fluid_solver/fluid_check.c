@@ -1,0 +1,106 @@
+/* The semantic check of a fluid case (fluid_keys.h). It runs in `fsi run --check`
+ * before any process starts, from the case alone: it builds no particles.
+ * As for the solid (solid_solver/solid_check.c), a box that is not a whole number of
+ * spacings long is an error: rounding would silently change the depth of the water,
+ * and with it the hydrostatic pressure every benchmark compares. */
+#include <math.h>
+#include <string.h>
+
+#include "case_check.h"
+#include "fluid_geometry.h"
+#include "fluid_keys.h"
+
+static const char axis_name[3] = {'x', 'y', 'z'};
+
+static void check_box_sizes(fsi_case_checker *k, const fluid_geometry *g)
+{
+    const double dx = g->spacing;
+    for (int b = 0; b < g->n_boxes; b++) {
+        const fluid_box *box = &g->boxes[b];
+        for (int d = 0; d < FSI_DIM; d++) {
+            double size = box->max[d] - box->min[d], n = fluid_box_spacings(box, dx, d);
+            if (size <= 0) {
+                fsi_case_problem(k, box->section, "max", "must exceed min along %c (min %.9g m, "
+                        "max %.9g m)", axis_name[d], box->min[d], box->max[d]);
+            } else if (n < 1.0 - FLUID_GEOMETRY_TOL) {
+                fsi_case_problem(k, box->section, "max",
+                                 "the box is %.6g m thick along %c, thinner "
+                                 "than one spacing (%.9g m): it would hold no particle",
+                                 size, axis_name[d], dx);
+            } else if (fabs(n - round(n)) > FLUID_GEOMETRY_TOL * fmax(1.0, n)) {
+                double lo = floor(n), hi = ceil(n);
+                fsi_case_problem(
+                    k, box->section, "max",
+                    "the box is %.6g spacings long along %c; the "
+                    "lattice needs a whole number: use max = %.9g or %.9g along %c, or "
+                    "spacing = %.9g or %.9g",
+                    n, axis_name[d], box->min[d] + lo * dx, box->min[d] + hi * dx, axis_name[d],
+                    size / lo, size / hi);
+            }
+        }
+    }
+}
+
+/* Water in a wall, a wall in a wall, water in water: particles would be created twice
+ * or on top of each other. */
+static void check_overlaps(fsi_case_checker *k, const fluid_geometry *g)
+{
+    for (int b = 0; b < g->n_boxes; b++)
+        for (int a = 0; a < b; a++) {
+            const fluid_box *p = &g->boxes[a], *q = &g->boxes[b];
+            if (fluid_boxes_overlap(p, q) <= FLUID_GEOMETRY_TOL * g->spacing)
+                continue;
+            fsi_case_problem(k, q->section, NULL, "overlaps [%s] (%s): %s; let boxes touch, not "
+                    "overlap", p->section, fsi_case_where(k->c, p->section, NULL),
+                    p->is_wall != q->is_wall ? "water inside a wall"
+                                             : "particles would be created twice");
+        }
+}
+
+static void check_probes(fsi_case_checker *k, const fluid_geometry *g)
+{
+    for (int q = 0; q < g->n_probes; q++) {
+        int inside = 0;
+        for (int b = 0; b < g->n_boxes && !inside; b++)
+            inside = !g->boxes[b].is_wall &&
+                     fluid_box_contains(&g->boxes[b], g->spacing, g->probes[q].point);
+        if (!inside)
+            fsi_case_problem(k, g->probes[q].section, "point",
+                             "lies in no [fluid.block]: a pressure "
+                             "probe must start in (or on the edge of) the water");
+    }
+}
+
+static void check_sound_speed(fsi_case_checker *k, const char *role)
+{
+    if (fsi_case_get_real(k->c, role, "sound_speed", 0.0) > 0.0)
+        return;
+    if (!(fsi_case_get_real(k->c, role, "max_velocity", 0.0) > 0.0) &&
+        !(fsi_case_get_real(k->c, role, "max_pressure", 0.0) > 0.0))
+        fsi_case_problem(k, role, "sound_speed", "is 0 (derive it from 000 Eq. 7) but neither "
+                "max_velocity nor max_pressure is given: give c0 or the expected largest "
+                "velocity or pressure");
+}
+
+int fluid_geometry_check(const fsi_case *c, const char *role, FILE *errors)
+{
+    fsi_case_checker k = {c, errors, 0};
+    fluid_geometry g;
+    char msg[256];
+    if (fluid_geometry_read(&g, c, role, msg, sizeof msg) != 0) {
+        fprintf(errors, "%s: %s\n", fsi_case_path(c), msg);
+        return 1;
+    }
+    check_box_sizes(&k, &g);
+    if (k.errors == 0)
+        check_overlaps(&k, &g);
+    if (k.errors == 0 && fluid_geometry_lattice_size(&g) > FLUID_MAX_LATTICE)
+        fsi_case_problem(&k, role, "spacing",
+                         "the boxes would hold %.3g particles, more than %.3g: "
+                         "use a larger spacing",
+                         fluid_geometry_lattice_size(&g), (double)FLUID_MAX_LATTICE);
+    check_probes(&k, &g);
+    check_sound_speed(&k, role);
+    fluid_geometry_free(&g);
+    return k.errors;
+}

@@ -1,0 +1,64 @@
+/* The fluid's geometry from the case: boxes of water ([fluid.block NAME]) and of fixed
+ * wall particles ([fluid.wall NAME]), both filled with the lattice min + (i + 1/2) dx
+ * along each axis (n_d = (max_d - min_d) / dx points, a whole number checked by
+ * fluid_geometry_check), and probe points. A solid_geometry's counterpart for the
+ * fluid; the two share nothing but the lattice convention, so that a wall box drawn
+ * on the faces of a solid block lines up with it. */
+#ifndef FSI_FLUID_GEOMETRY_H
+#define FSI_FLUID_GEOMETRY_H
+
+#include <stddef.h>
+
+#include "case_file.h"
+#include "dim.h"
+#include "fluid_particles.h"
+
+/* Relative tolerance (in spacings) of "a whole number of spacings" and of boxes. */
+#define FLUID_GEOMETRY_TOL 1e-6
+
+/* Most particles: ids are int32. */
+#define FLUID_MAX_LATTICE 2147483647.0
+
+typedef struct {
+    const char *section;        /* "fluid.block NAME" or "fluid.wall NAME" (the case's) */
+    double min[FSI_DIM], max[FSI_DIM];
+    long count[FSI_DIM];        /* lattice points along each axis */
+    int is_wall, free_slip;
+} fluid_box;
+
+typedef struct {
+    const char *section;        /* "fluid.probe NAME" */
+    double point[FSI_DIM];
+} fluid_probe_point;
+
+typedef struct {
+    double spacing;
+    int n_boxes, n_probes;      /* boxes: the blocks in file order, then the walls */
+    fluid_box *boxes;
+    fluid_probe_point *probes;
+} fluid_geometry;
+
+/* Reads [role] spacing and the block, wall and probe sections of a case. Returns 0,
+ * or -1 with a message when memory runs out. */
+int fluid_geometry_read(fluid_geometry *g, const fsi_case *c, const char *role, char *msg,
+                        size_t msg_size);
+void fluid_geometry_free(fluid_geometry *g);
+
+/* (max - min) / spacing along 'axis', not rounded. */
+double fluid_box_spacings(const fluid_box *b, double spacing, int axis);
+/* Lattice points of every box, as a double (no overflow). */
+double fluid_geometry_lattice_size(const fluid_geometry *g);
+/* Width of the overlap of two boxes, minimum over axes: > 0 when they share a volume. */
+double fluid_boxes_overlap(const fluid_box *a, const fluid_box *b);
+/* True when x lies in the closed box, within FLUID_GEOMETRY_TOL spacings. */
+int fluid_box_contains(const fluid_box *b, double spacing, const double *x);
+
+/* Creates the particles: fluid particles (FLUID_PARTICLE_FLUID) of every block, then
+ * wall particles (FLUID_PARTICLE_WALL) of every wall; id = index, v = 0, volume
+ * dx^DIM, mass rho0 dx^DIM, density rho0, pressure 0. free_slip[i] (allocated here,
+ * n entries) is 1 for the particles of a free-slip wall. Returns 0, or -1 with a
+ * message. */
+int fluid_geometry_build(const fluid_geometry *g, double density, fluid_particles *p,
+                         unsigned char **free_slip, char *msg, size_t msg_size);
+
+#endif

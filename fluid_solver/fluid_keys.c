@@ -1,0 +1,109 @@
+/* Keys every fluid scheme has and the fluid's object sections (docs/cases.md is
+ * generated from these tables: each description is one sentence a user reads). */
+#include "fluid_keys.h"
+
+#include "dim.h"
+
+#if FSI_DIM == 2
+#define ZERO_VECTOR "0, 0"
+#else
+#define ZERO_VECTOR "0, 0, 0"
+#endif
+
+static const fsi_key_spec common_keys[] = {
+    {"spacing", FSI_KEY_REAL, "m", NULL, FSI_BOUND_MIN_OPEN, 0, 0, NULL,
+     "Initial particle spacing dx: blocks and walls are filled with particles at "
+     "min + (i + 1/2) dx, each of volume dx^DIM, so every box must be a whole number of "
+     "spacings long."},
+    {"density", FSI_KEY_REAL, "kg/m^3", "1000", FSI_BOUND_MIN_OPEN, 0, 0, NULL,
+     "Reference density rho0 of the fluid (000 Eq. 6)."},
+    {"viscosity", FSI_KEY_REAL, "Pa s", "1e-3", FSI_BOUND_MIN, 0, 0, NULL,
+     "Dynamic viscosity mu of the Newtonian viscous stress tau = 2 mu e' (000 Eqs. 4-5); "
+     "the physical value (water: 1e-3)."},
+    {"sound_speed", FSI_KEY_REAL, "m/s", "0", FSI_BOUND_MIN, 0, 0, NULL,
+     "Reference sound speed c0 of the equation of state (000 Eq. 6); 0 derives it from "
+     "000 Eq. 7, c0 = 10 max(sqrt(max_pressure / rho0), max_velocity)."},
+    {"max_velocity", FSI_KEY_REAL, "m/s", "0", FSI_BOUND_MIN, 0, 0, NULL,
+     "Largest velocity expected in the flow, U_max of 000 Eq. 7 (e.g. sqrt(2 g H) for "
+     "water falling from a height H); used only when sound_speed = 0."},
+    {"max_pressure", FSI_KEY_REAL, "Pa", "0", FSI_BOUND_MIN, 0, 0, NULL,
+     "Largest pressure expected in the flow, p_max of 000 Eq. 7 (e.g. rho0 g H at the "
+     "bottom of a column of depth H); used only when sound_speed = 0."},
+    {"tait_exponent", FSI_KEY_REAL, "-", "7", FSI_BOUND_MIN, 1, 0, NULL,
+     "Exponent gamma of the Tait equation of state p = rho0 c0^2 / gamma ((rho / "
+     "rho0)^gamma - 1) (000 Eq. 6; 7 for water)."},
+    {"gravity", FSI_KEY_VECTOR, "m/s^2", ZERO_VECTOR, 0, 0, 0, NULL,
+     "Body acceleration g on every fluid particle (000 Eq. 2); coupled scenes give the "
+     "solid the same vector."},
+    {"initial_pressure", FSI_KEY_CHOICE, "-", "hydrostatic", 0, 0, 0, "hydrostatic|zero",
+     "hydrostatic: each block starts with p = rho0 |g| depth below its top (the corner "
+     "highest against gravity) and the density of that pressure, so a fluid at rest "
+     "starts in equilibrium; zero: p = 0, rho = rho0 everywhere (an acoustic transient "
+     "follows)."},
+    {"cfl_acoustic", FSI_KEY_REAL, "-", "0.25", FSI_BOUND_MIN_OPEN | FSI_BOUND_MAX, 0, 1, NULL,
+     "Acoustic limit of the step: dt <= cfl_acoustic h / (c0 + |v|max) (Monaghan 1992's "
+     "0.25 for the predictor-corrector, h the smoothing length)."},
+    {"cfl_viscous", FSI_KEY_REAL, "-", "0.125", FSI_BOUND_MIN_OPEN | FSI_BOUND_MAX, 0, 1, NULL,
+     "Viscous limit of the step: dt <= cfl_viscous rho0 h^2 / mu (Morris et al. 1997's "
+     "0.125)."},
+    {"cfl_force", FSI_KEY_REAL, "-", "0.25", FSI_BOUND_MIN_OPEN | FSI_BOUND_MAX, 0, 1, NULL,
+     "Force limit of the step: dt <= cfl_force sqrt(h / |a|max) (Monaghan 1992's 0.25)."},
+    {"energy_growth_limit", FSI_KEY_REAL, "-", "2", FSI_BOUND_MIN_OPEN, 1, 0, NULL,
+     "The run stops as unstable when the kinetic energy exceeds this factor times (the "
+     "initial kinetic and compression energy + the potential energy released since the "
+     "start) plus a floor of 1e-6 M c0^2; a stable fluid stays at or below 1 of it."},
+};
+
+const fsi_key_table fsi_fluid_common_keys = {
+    "fluid_common",
+    "Keys every fluid scheme has: the lattice, the fluid's properties and equation of "
+    "state, gravity, the time-step limits and the energy check of the fluid main loop "
+    "(fluid_solver/README.md).",
+    common_keys, (int)(sizeof common_keys / sizeof common_keys[0])};
+
+static const fsi_key_spec block_keys[] = {
+    {"min", FSI_KEY_VECTOR, "m", NULL, 0, 0, 0, NULL,
+     "Lower corner of the box of water filled with particles."},
+    {"max", FSI_KEY_VECTOR, "m", NULL, 0, 0, 0, NULL,
+     "Upper corner; max - min must be a whole number of spacings along each axis, at "
+     "least one."},
+};
+
+const fsi_key_table fsi_fluid_block_keys = {
+    "fluid.block", "A box of fluid filled with a regular lattice of particles.", block_keys,
+    (int)(sizeof block_keys / sizeof block_keys[0])};
+
+static const fsi_key_spec wall_keys[] = {
+    {"min", FSI_KEY_VECTOR, "m", NULL, 0, 0, 0, NULL,
+     "Lower corner of the box of fixed wall (ghost) particles (000 §2.3); make walls 3 to "
+     "4 spacings thick so that the fluid near them has a full support."},
+    {"max", FSI_KEY_VECTOR, "m", NULL, 0, 0, 0, NULL,
+     "Upper corner; max - min must be a whole number of spacings along each axis."},
+    {"free_slip", FSI_KEY_BOOL, "-", "false", 0, 0, 0, NULL,
+     "false: no-slip, the wall's particles carry the virtual velocity 2 v_wall - v~ of "
+     "000 Eqs. 50-51 into the viscous stress; true: free-slip, they carry v~ (no viscous "
+     "shear from the wall)."},
+};
+
+const fsi_key_table fsi_fluid_wall_keys = {
+    "fluid.wall",
+    "A box of fixed wall particles whose pressure and density are extrapolated from the "
+    "fluid (000 Eqs. 50-54).",
+    wall_keys, (int)(sizeof wall_keys / sizeof wall_keys[0])};
+
+static const fsi_key_spec probe_keys[] = {
+    {"point", FSI_KEY_VECTOR, "m", NULL, 0, 0, 0, NULL,
+     "Where the pressure is measured: the nearest fluid particle's pressure carried to "
+     "the point with its pressure gradient (000 Eq. 13), column NAME_p of probes.csv; the "
+     "point must lie in (or on the edge of) a block."},
+};
+
+const fsi_key_table fsi_fluid_probe_keys = {
+    "fluid.probe", "The fluid pressure at a fixed point, recorded in probes.csv.", probe_keys,
+    (int)(sizeof probe_keys / sizeof probe_keys[0])};
+
+const fsi_object_kind fsi_fluid_object_kinds[FSI_FLUID_N_OBJECT_KINDS] = {
+    {"block", "Boxes of fluid at the start.", &fsi_fluid_block_keys, 1},
+    {"wall", "Boxes of fixed wall particles (a tank is several).", &fsi_fluid_wall_keys, 0},
+    {"probe", "Points where the pressure goes to probes.csv.", &fsi_fluid_probe_keys, 0},
+};

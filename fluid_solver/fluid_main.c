@@ -1,0 +1,537 @@
+/* The fluid participant: the main loop every fluid scheme shares (README.md in this
+ * folder). Built once per scheme as fsi-fluid-<scheme>; the scheme behind
+ * fluid_scheme.h supplies the rates (density rate, acceleration), wall particles and
+ * its stable step, this file everything else:
+ *
+ *   setup   blocks and walls -> particles, the fluid's properties (c0 from 000 Eq. 7
+ *           when not given), the initial pressure, the scheme, probes, output file
+ *   window  read the solid's state and publish the loads (empty in a fluid-only run),
+ *           sub-cycle the predictor-corrector of 000 Eq. 56 in n = ceil(window /
+ *           stable step) equal steps, check health after every step and the energy
+ *           after every window, probes, output, propose DBL_MAX (sub-cycling: the
+ *           fluid does not limit the window)
+ *
+ * A failure anywhere stops everyone with fsi_abort naming what, the particle, where and
+ * when; nothing non-finite is ever written or sent. */
+#include <float.h>
+#include <math.h>
+#include <omp.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "dim.h"
+#include "fluid_geometry.h"
+#include "fluid_probes.h"
+#include "fluid_scheme.h"
+#include "h5_output.h"
+#include "log.h"
+#include "participant.h"
+#include "particle_health.h"
+#include "small_tensor.h"
+#include "timers.h"
+
+#define ROLE "fluid"
+/* More steps in one window than this means a broken stable step, not a run. */
+#define MAX_SUBSTEPS 100000000L
+/* A fluid particle farther than this many diagonals of the initial bounding box of
+ * all particles (water and walls) outside it has left any plausible domain. */
+#define ESCAPE_DIAGONALS 1.0
+/* The energy check's floor in units of M c0^2: kinetic energy below it is noise of
+ * the weak compressibility, not an instability. */
+#define ENERGY_FLOOR 1e-6
+
+typedef struct {
+    const fsi_case *c;
+    fluid_geometry geometry;
+    fluid_particles p;
+    unsigned char *free_slip;
+    fluid_properties props;
+    fluid_scheme *scheme;
+    fluid_probes probes;
+    int n_fluid;
+    double *x0, *v0, *rho0, *drho, *accel, *grad_p;
+    double energy_limit, kinetic0, compression0, potential0, energy_floor;
+    double box_min[FSI_DIM], box_max[FSI_DIM];
+    fsi_h5_writer *out;
+    fsi_timers timers;
+    int t_rates, t_integrate, t_exchange, t_output;
+    long steps;
+    char msg[512];
+} fluid_run;
+
+static double *new_vector(int n, int ncomp)
+{
+    return calloc((size_t)(n > 0 ? n : 1) * (size_t)ncomp, sizeof(double));
+}
+
+/* "(x, y)" of particle i's current position, for messages. */
+static const char *where_text(const fluid_run *s, int i, char *buf, size_t size)
+{
+    return fsi_point_text(&s->p.x[i * FSI_DIM], buf, size);
+}
+
+static void free_run(fluid_run *s)
+{
+    if (s->out)
+        fsi_h5_close(s->out);
+    fluid_scheme_free(s->scheme);
+    fluid_probes_free(&s->probes);
+    fluid_particles_free(&s->p);
+    fluid_geometry_free(&s->geometry);
+    free(s->free_slip);
+    free(s->x0);
+    free(s->v0);
+    free(s->rho0);
+    free(s->drho);
+    free(s->accel);
+    free(s->grad_p);
+}
+
+static double kinetic_energy(const fluid_particles *p)
+{
+    double e = 0.0;
+    for (int i = 0; i < p->n; i++)
+        if (p->flags[i] & FLUID_PARTICLE_FLUID)
+            e += 0.5 * p->mass[i] * fsi_vec_dot(&p->v[i * FSI_DIM], &p->v[i * FSI_DIM]);
+    return e;
+}
+
+/* Compression energy sum m p^2 / (2 rho^2 c^2), c^2 = c0^2 (rho / rho0)^(gamma - 1) the
+ * local dp/drho of 000 Eq. 6: the work stored by compressing the fluid to its pressure
+ * (exact for a linear equation of state, a bound's worth here). A fluid started at the
+ * hydrostatic pressure holds it, and it can turn into motion. */
+static double compression_energy(const fluid_particles *p, const fluid_properties *pr)
+{
+    double e = 0.0;
+    for (int i = 0; i < p->n; i++) {
+        if (!(p->flags[i] & FLUID_PARTICLE_FLUID))
+            continue;
+        const double rho = p->density[i];
+        const double c2 = pr->sound_speed * pr->sound_speed *
+                          pow(rho / pr->density, pr->tait_exponent - 1.0);
+        e += p->mass[i] * p->pressure[i] * p->pressure[i] / (2.0 * rho * rho * c2);
+    }
+    return e;
+}
+
+/* -sum m g . x over the fluid: what gravity can turn into kinetic energy. */
+static double potential_energy(const fluid_particles *p, const double *gravity)
+{
+    double e = 0.0;
+    for (int i = 0; i < p->n; i++)
+        if (p->flags[i] & FLUID_PARTICLE_FLUID)
+            e -= p->mass[i] * fsi_vec_dot(gravity, &p->x[i * FSI_DIM]);
+    return e;
+}
+
+/* c0 from the case, or 000 Eq. 7: c0 = 10 max(sqrt(p_max / rho0), U_max), which keeps
+ * the density within about 1 % of rho0. */
+static double sound_speed(const fsi_case *c, double rho0)
+{
+    double c0 = fsi_case_get_real(c, ROLE, "sound_speed", 0.0);
+    if (c0 > 0.0)
+        return c0;
+    double u_max = fsi_case_get_real(c, ROLE, "max_velocity", 0.0);
+    double p_max = fsi_case_get_real(c, ROLE, "max_pressure", 0.0);
+    return 10.0 * fmax(sqrt(p_max / rho0), u_max);
+}
+
+/* initial_pressure = hydrostatic: p = rho0 |g| depth, the depth below the corner of the
+ * particle's block highest against gravity; the density from the equation of state and
+ * the mass rho V0 (the particle holds its lattice volume at that pressure). */
+static void hydrostatic_start(fluid_run *s)
+{
+    const double *g = s->props.gravity;
+    const double g_norm = fsi_vec_norm(g);
+    if (!(g_norm > 0.0))
+        return;
+    int i = 0;
+    for (int b = 0; b < s->geometry.n_boxes; b++) {
+        const fluid_box *box = &s->geometry.boxes[b];
+        long count = 1;
+        for (int d = 0; d < FSI_DIM; d++)
+            count *= box->count[d];
+        if (box->is_wall)
+            continue;       /* blocks come first in the particle order */
+        /* Highest corner: along each axis the end that gravity points away from. */
+        double top[FSI_DIM];
+        for (int d = 0; d < FSI_DIM; d++)
+            top[d] = g[d] < 0.0 ? box->max[d] : box->min[d];
+        for (long j = 0; j < count; j++, i++) {
+            double depth = 0.0;
+            for (int d = 0; d < FSI_DIM; d++)
+                depth += (s->p.x[i * FSI_DIM + d] - top[d]) * g[d] / g_norm;
+            double pressure = s->props.density * g_norm * depth;
+            s->p.density[i] = fluid_scheme_density(s->scheme, pressure);
+            s->p.mass[i] = s->p.density[i] * s->p.volume[i];
+        }
+    }
+}
+
+/* The kind flags as the int32 the HDF5 output takes (a new array, or NULL). */
+static int32_t *flags_as_int32(const fluid_particles *p)
+{
+    int32_t *flags = malloc((size_t)(p->n > 0 ? p->n : 1) * sizeof *flags);
+    if (flags)
+        for (int i = 0; i < p->n; i++)
+            flags[i] = p->flags[i];
+    return flags;
+}
+
+static int write_static(fluid_run *s)
+{
+    const fluid_particles *p = &s->p;
+    int32_t *flags = flags_as_int32(p);
+    if (!flags)
+        return -1;
+    int rc = fsi_h5_write_static_int(s->out, "id", p->id, p->n, 1) |
+             fsi_h5_write_static_real(s->out, "x0", p->x, p->n, FSI_DIM) |
+             fsi_h5_write_static_int(s->out, "flags", flags, p->n, 1);
+    free(flags);
+    return rc ? -1 : 0;
+}
+
+/* Rates at the current state into drho, accel. */
+static int evaluate(fluid_run *s)
+{
+    fsi_timer_start(&s->timers, s->t_rates);
+    int rc = fluid_scheme_rates(s->scheme, &s->p, s->drho, s->accel, s->msg, sizeof s->msg);
+    fsi_timer_stop(&s->timers, s->t_rates);
+    return rc;
+}
+
+/* Everything before the first window. Returns 0, or -1 with s->msg set. */
+static int setup(fluid_run *s, fsi_participant *part)
+{
+    const fsi_case *c = s->c;
+    size_t ms = sizeof s->msg;
+    if (fluid_geometry_read(&s->geometry, c, ROLE, s->msg, ms) != 0)
+        return -1;
+    fluid_properties *pr = &s->props;
+    pr->density = fsi_case_get_real(c, ROLE, "density", 1000.0);
+    pr->viscosity = fsi_case_get_real(c, ROLE, "viscosity", 1e-3);
+    pr->sound_speed = sound_speed(c, pr->density);
+    pr->tait_exponent = fsi_case_get_real(c, ROLE, "tait_exponent", 7.0);
+    if (fsi_case_get_vector(c, ROLE, "gravity", pr->gravity) != 0)
+        memset(pr->gravity, 0, sizeof pr->gravity);
+    if (!(pr->sound_speed > 0.0)) {
+        snprintf(s->msg, ms, "[fluid] sound_speed: 0 and no max_velocity or max_pressure to "
+                 "derive it from (000 Eq. 7)");
+        return -1;
+    }
+    if (fluid_geometry_build(&s->geometry, pr->density, &s->p, &s->free_slip, s->msg, ms) != 0)
+        return -1;
+    pr->free_slip = s->free_slip;
+    fluid_particles *p = &s->p;
+    for (int i = 0; i < p->n; i++)
+        s->n_fluid += (p->flags[i] & FLUID_PARTICLE_FLUID) != 0;
+    s->energy_limit = fsi_case_get_real(c, ROLE, "energy_growth_limit", 2.0);
+
+    s->x0 = new_vector(p->n, FSI_DIM);
+    s->v0 = new_vector(p->n, FSI_DIM);
+    s->rho0 = new_vector(p->n, 1);
+    s->drho = new_vector(p->n, 1);
+    s->accel = new_vector(p->n, FSI_DIM);
+    s->grad_p = new_vector(p->n, FSI_DIM);
+    if (!s->x0 || !s->v0 || !s->rho0 || !s->drho || !s->accel || !s->grad_p) {
+        snprintf(s->msg, ms, "out of memory for %d fluid particles", p->n);
+        return -1;
+    }
+    s->scheme = fluid_scheme_create(c, ROLE, pr, p, s->msg, ms);
+    if (!s->scheme)
+        return -1;
+    const char *start = fsi_case_get(c, ROLE, "initial_pressure");
+    if (!start || strcmp(start, "zero") != 0)
+        hydrostatic_start(s);
+    if (fluid_probes_init(&s->probes, &s->geometry, part, s->msg, ms) != 0)
+        return -1;
+    fsi_escape_box(p->x, p->n, ESCAPE_DIAGONALS, p->spacing, s->box_min, s->box_max);
+    if (evaluate(s) != 0)
+        return -1;
+
+    double mass = 0.0;
+    for (int i = 0; i < p->n; i++)
+        if (p->flags[i] & FLUID_PARTICLE_FLUID)
+            mass += p->mass[i];
+    s->energy_floor = ENERGY_FLOOR * mass * pr->sound_speed * pr->sound_speed;
+    s->kinetic0 = kinetic_energy(p);
+    s->compression0 = compression_energy(p, pr);
+    s->potential0 = potential_energy(p, pr->gravity);
+
+    s->out = fsi_h5_create(fsi_output_dir(part), fsi_participant_name(part),
+                           fsi_case_get(c, ROLE, "solver"));
+    if (!s->out) {
+        snprintf(s->msg, ms, "cannot create the output file in %s", fsi_output_dir(part));
+        return -1;
+    }
+    if (write_static(s) != 0) {
+        snprintf(s->msg, ms, "cannot write the static particle data");
+        return -1;
+    }
+    fsi_info("%d particles (%d fluid in %d boxes, %d wall), spacing %g m, h = %g m, "
+             "fluid mass %g, c0 = %g m/s%s, stable step %g s", p->n, s->n_fluid,
+             s->geometry.n_boxes, p->n - s->n_fluid, p->spacing,
+             fluid_scheme_smoothing_length(s->scheme), mass, pr->sound_speed,
+             fsi_case_get_real(c, ROLE, "sound_speed", 0.0) > 0.0 ? "" : " (000 Eq. 7)",
+             fluid_scheme_stable_dt(s->scheme, p, 0.0));
+    return 0;
+}
+
+/* Largest |a| of a fluid particle from the last rates. */
+static double max_acceleration(const fluid_run *s)
+{
+    double amax = 0.0;
+    for (int i = 0; i < s->p.n; i++)
+        if (s->p.flags[i] & FLUID_PARTICLE_FLUID)
+            amax = fmax(amax, fsi_vec_norm(&s->accel[i * FSI_DIM]));
+    return amax;
+}
+
+/* A non-finite position, velocity or density of a fluid particle after a step. */
+static int check_finite(fluid_run *s, double t, int window)
+{
+    const fluid_particles *p = &s->p;
+    for (int i = 0; i < p->n; i++) {
+        if (!(p->flags[i] & FLUID_PARTICLE_FLUID))
+            continue;
+        int ok = isfinite(p->density[i]) && p->density[i] > 0.0;
+        for (int d = 0; d < FSI_DIM; d++)
+            ok = ok && isfinite(p->x[i * FSI_DIM + d]) && isfinite(p->v[i * FSI_DIM + d]);
+        if (!ok) {
+            snprintf(s->msg, sizeof s->msg, "particle %d has a non-finite position, velocity "
+                     "or density (density %g) at t = %.9g s (window %d, step %ld): the "
+                     "integration is unstable", p->id[i], p->density[i], t, window, s->steps);
+            return -1;
+        }
+    }
+    return 0;
+}
+
+/* One predictor-corrector step of 000 Eq. 56 for the fluid particles (rates at the
+ * start state already in drho, accel):
+ *   predictor  rho^{n+1/2} = rho^n + dt/2 drho^n,  v^{n+1/2} = v^n + dt/2 a^n,
+ *              x^{n+1/2} = x^n + dt/2 v^n
+ *   corrector  rho^{n+1} = rho^n + dt drho^{n+1/2},  v^{n+1} = v^n + dt a^{n+1/2},
+ *              x^{n+1} = x^n + dt (v^n + v^{n+1}) / 2
+ * (000 Eq. 56 as printed is garbled; the corrector's position update uses the mean
+ * velocity over the step, i.e. the corrected mid-step velocity, which keeps the scheme
+ * second order.) */
+static int step(fluid_run *s, double dt)
+{
+    fluid_particles *p = &s->p;
+    const int n = p->n;
+    fsi_timer_start(&s->timers, s->t_integrate);
+    memcpy(s->x0, p->x, (size_t)n * FSI_DIM * sizeof *p->x);
+    memcpy(s->v0, p->v, (size_t)n * FSI_DIM * sizeof *p->v);
+    memcpy(s->rho0, p->density, (size_t)n * sizeof *p->density);
+    for (int i = 0; i < n; i++) {
+        if (!(p->flags[i] & FLUID_PARTICLE_FLUID))
+            continue;
+        p->density[i] += 0.5 * dt * s->drho[i];
+        for (int d = 0; d < FSI_DIM; d++) {
+            p->x[i * FSI_DIM + d] += 0.5 * dt * p->v[i * FSI_DIM + d];
+            p->v[i * FSI_DIM + d] += 0.5 * dt * s->accel[i * FSI_DIM + d];
+        }
+    }
+    fsi_timer_stop(&s->timers, s->t_integrate);
+    if (evaluate(s) != 0)
+        return -1;
+    fsi_timer_start(&s->timers, s->t_integrate);
+    for (int i = 0; i < n; i++) {
+        if (!(p->flags[i] & FLUID_PARTICLE_FLUID))
+            continue;
+        p->density[i] = s->rho0[i] + dt * s->drho[i];
+        for (int d = 0; d < FSI_DIM; d++) {
+            const int k = i * FSI_DIM + d;
+            p->v[k] = s->v0[k] + dt * s->accel[k];
+            p->x[k] = s->x0[k] + 0.5 * dt * (s->v0[k] + p->v[k]);
+        }
+    }
+    s->steps++;
+    fluid_scheme_after_step(s->scheme, p, s->steps);
+    fsi_timer_stop(&s->timers, s->t_integrate);
+    return 0;
+}
+
+/* The window [t0, t0 + dt] in equal steps no longer than the stable step at its start. */
+static int advance(fluid_run *s, double t0, double dt, int window)
+{
+    if (evaluate(s) != 0)
+        return -1;
+    if (dt <= 0.0)
+        return 0;
+    double stable = fluid_scheme_stable_dt(s->scheme, &s->p, max_acceleration(s));
+    if (!(stable > 0.0) || !isfinite(stable) || dt / stable > (double)MAX_SUBSTEPS) {
+        snprintf(s->msg, sizeof s->msg, "the stable step is %g s at t = %.9g s (window %d): "
+                 "the window of %g s cannot be sub-cycled", stable, t0, window, dt);
+        return -1;
+    }
+    /* 1e-9: a window equal to a whole number of steps up to round-off gets no more. */
+    long n = (long)ceil(dt / stable - 1e-9);
+    if (n < 1)
+        n = 1;
+    const double h = dt / (double)n;
+    for (long j = 0; j < n; j++) {
+        if (j > 0 && evaluate(s) != 0)
+            return -1;
+        if (step(s, h) != 0 || check_finite(s, t0 + h * (double)(j + 1), window) != 0)
+            return -1;
+    }
+    return 0;
+}
+
+/* After a window: every fluid particle inside the generous box, the kinetic energy
+ * within what gravity has released. */
+static int check_health(fluid_run *s, double t, int window)
+{
+    const fluid_particles *p = &s->p;
+    /* Wall particles never move: only fluid particles can leave. */
+    const int i = fsi_outside_box(p->x, p->n, s->box_min, s->box_max);
+    if (i >= 0) {
+        char at[128];
+        snprintf(s->msg, sizeof s->msg, "particle %d left the domain: at %s, more than %g "
+                 "diagonals outside the initial box of water and walls, at t = %.9g s "
+                 "(window %d)", p->id[i], where_text(s, i, at, sizeof at), ESCAPE_DIAGONALS,
+                 t, window);
+        return -1;
+    }
+    /* Without inflow K + P + E_c = K0 + P0 + E_c0 - (dissipation), with the potential
+     * energy P and the compression energy E_c >= 0, so K(t) <= K0 + E_c0 + (P0 - P(t));
+     * an unstable integration makes energy from nothing. */
+    double kinetic = kinetic_energy(p), released = s->potential0 -
+                                                   potential_energy(p, s->props.gravity);
+    double budget = fmax(s->kinetic0 + s->compression0 + released, 0.0);
+    if (!isfinite(kinetic) || kinetic > s->energy_limit * budget + s->energy_floor) {
+        /* Wall particles are at rest: the fastest particle is a fluid one. */
+        double speed;
+        const int fastest = fsi_fastest(p->v, p->n, &speed);
+        char at[128];
+        snprintf(s->msg, sizeof s->msg,
+                 "kinetic energy grew to %.6g J, more than "
+                 "energy_growth_limit = %g times the initial kinetic and compression energy "
+                 "plus the potential energy released (%.6g J) plus the floor %.3g J; fastest: "
+                 "particle %d at %s "
+                 "at %.3g m/s; at t = %.9g s (window %d): the integration is unstable",
+                 kinetic, s->energy_limit, budget, s->energy_floor, p->id[fastest],
+                 where_text(s, fastest, at, sizeof at), speed, t, window);
+        return -1;
+    }
+    return 0;
+}
+
+static int write_frame(fluid_run *s, int frame, double t, long window)
+{
+    const fluid_particles *p = &s->p;
+    int32_t *flags = flags_as_int32(p);
+    if (!flags)
+        return -1;
+    int rc = fsi_h5_begin_frame(s->out, frame, t, window, p->n, p->x) != 0 ||
+             fsi_h5_write_field_real(s->out, "velocity", p->v, FSI_DIM) != 0 ||
+             fsi_h5_write_field_real(s->out, "acceleration", s->accel, FSI_DIM) != 0 ||
+             fsi_h5_write_field_real(s->out, "density", p->density, 1) != 0 ||
+             fsi_h5_write_field_real(s->out, "pressure", p->pressure, 1) != 0 ||
+             fsi_h5_write_field_int(s->out, "flags", flags, 1) != 0 ||
+             fluid_scheme_write_fields(s->scheme, s->out) != 0;
+    free(flags);
+    return rc ? -1 : fsi_h5_end_frame(s->out);
+}
+
+/* Reads the solid's state and publishes the loads on it. A fluid-only run exchanges
+ * empty interfaces; moving boundary particles (the solid seen by the fluid, 000 §3)
+ * come with the coupling issue, so a solid that sends particles is refused. */
+static int exchange(fluid_run *s, fsi_participant *part)
+{
+    fsi_interface solid;
+    fsi_read_interface(part, &solid);
+    if (solid.n > 0) {
+        snprintf(s->msg, sizeof s->msg, "the solid sent %d interface particles, but this "
+                 "fluid does not take moving boundaries yet: run it alone", solid.n);
+        return -1;
+    }
+    fsi_interface loads = {0, NULL, NULL, NULL, NULL, NULL, NULL, NULL};
+    if (fsi_write_interface(part, &loads) != 0) {
+        snprintf(s->msg, sizeof s->msg, "cannot publish the fluid loads");
+        return -1;
+    }
+    return 0;
+}
+
+int main(void)
+{
+    fsi_participant *part = fsi_open(NULL, ROLE, NULL, DBL_MAX);
+    if (!part)
+        return FSI_EXIT_RUN_FAILURE;
+    fluid_run s;
+    memset(&s, 0, sizeof s);
+    s.c = fsi_participant_case(part);
+    s.t_rates = fsi_timer_index(&s.timers, "rates");
+    s.t_integrate = fsi_timer_index(&s.timers, "integration");
+    s.t_exchange = fsi_timer_index(&s.timers, "exchange");
+    s.t_output = fsi_timer_index(&s.timers, "output");
+    if (setup(&s, part) != 0) {
+        fsi_abort(part, "%s", s.msg);
+        free_run(&s);
+        return FSI_EXIT_RUN_FAILURE;
+    }
+
+    while (fsi_ongoing(part)) {
+        double dt = fsi_window(part), t0 = fsi_time(part);
+        int window = fsi_window_index(part);
+
+        fsi_timer_start(&s.timers, s.t_exchange);
+        int rc = exchange(&s, part);
+        fsi_timer_stop(&s.timers, s.t_exchange);
+        if (rc != 0) {
+            fsi_abort(part, "window %d: %s", window, s.msg);
+            break;
+        }
+        if (advance(&s, t0, dt, window) != 0 || check_health(&s, t0 + dt, window) != 0) {
+            fsi_abort(part, "%s", s.msg);
+            break;
+        }
+        int frame = fsi_output_frame(part);
+        if (frame >= 0 || fsi_probe_window(part)) {
+            /* Pressures, walls and gradients of the state at the window's end. */
+            if (evaluate(&s) != 0) {
+                fsi_abort(part, "%s", s.msg);
+                break;
+            }
+            fluid_scheme_pressure_gradient(s.scheme, &s.p, s.grad_p);
+            fluid_probes_set(&s.probes, &s.p, s.grad_p, part);
+        }
+        if (frame >= 0) {
+            fsi_timer_start(&s.timers, s.t_output);
+            rc = write_frame(&s, frame, t0 + dt, window);
+            fsi_timer_stop(&s.timers, s.t_output);
+            if (rc != 0) {
+                fsi_abort(part, "cannot write output frame %d at t = %.9g s (window %d)",
+                          frame, t0 + dt, window);
+                break;
+            }
+        }
+        fsi_advance(part, DBL_MAX);   /* sub-cycling: the fluid never limits the window */
+    }
+    if (s.scheme) {
+        double vmax = 0.0;
+        for (int i = 0; i < s.p.n; i++)
+            if (s.p.flags[i] & FLUID_PARTICLE_FLUID)
+                vmax = fmax(vmax, fsi_vec_norm(&s.p.v[i * FSI_DIM]));
+        fsi_info("energy at the end: kinetic %.6g J (initial %.6g J), compression %.6g J "
+                 "(initial %.6g J), potential energy released %.6g J; largest fluid speed "
+                 "%.4g m/s", kinetic_energy(&s.p), s.kinetic0,
+                 compression_energy(&s.p, &s.props), s.compression0,
+                 s.potential0 - potential_energy(&s.p, s.props.gravity), vmax);
+        /* One particle-step is one fluid particle through one predictor-corrector step
+         * (two evaluations of the rates), the unit docs/performance.md uses. */
+        const double busy = s.timers.seconds[s.t_rates] + s.timers.seconds[s.t_integrate];
+        fsi_info("performance: %ld steps of %d fluid particles (%d in all, %lld neighbour "
+                 "pairs) on %d thread(s); rates %.3f s, integration %.3f s (%.4g "
+                 "particle-steps/s)", s.steps, s.n_fluid, s.p.n,
+                 fluid_scheme_pair_count(s.scheme), omp_get_max_threads(),
+                 s.timers.seconds[s.t_rates], s.timers.seconds[s.t_integrate],
+                 busy > 0.0 ? (double)s.n_fluid * (double)s.steps / busy : 0.0);
+    }
+    free_run(&s);
+    return fsi_close(part, &s.timers);
+}

@@ -1,0 +1,73 @@
+/* The functions every fluid scheme folder implements (ulph/, later wcsph/, isph/), the
+ * way SWIFT keeps each hydro scheme behind the same small set of functions. The main
+ * loop (fluid_main.c) owns the particles, the time integration, probes and output; a
+ * scheme owns what it needs between steps (neighbour lists, operators, scratch) and
+ * computes rates.
+ *
+ * Contract per evaluation of the rates at the particles' current state:
+ *   - fluid particles: the scheme sets pressure (equation of state) and volume
+ *     (m / rho) from density, and returns drho/dt and dv/dt;
+ *   - wall particles: the scheme sets their pressure, density and mass (the fixed ghost
+ *     boundary of 000 §2.3); their rates are zero (they do not move).
+ * Rates of any other particle are zero. */
+#ifndef FSI_FLUID_SCHEME_H
+#define FSI_FLUID_SCHEME_H
+
+#include <stddef.h>
+
+#include "case_file.h"
+#include "fluid_particles.h"
+#include "h5_output.h"
+
+typedef struct fluid_scheme fluid_scheme;
+
+/* What the main loop gives every scheme. */
+typedef struct {
+    double density;             /* rho0 [kg/m^3] */
+    double viscosity;           /* mu [Pa s] */
+    double sound_speed;         /* c0 [m/s], already derived (000 Eq. 7) */
+    double tait_exponent;       /* gamma (000 Eq. 6) */
+    double gravity[FSI_DIM];    /* [m/s^2] */
+    const unsigned char *free_slip; /* per particle: 1 for a free-slip wall particle */
+} fluid_properties;
+
+/* Reads the scheme's keys from [role] and allocates its state for p. NULL with msg. */
+fluid_scheme *fluid_scheme_create(const fsi_case *c, const char *role,
+                                  const fluid_properties *props, const fluid_particles *p,
+                                  char *msg, size_t msg_size);
+
+/* Pressure (and density) from the equation of state for every fluid particle. */
+double fluid_scheme_pressure(const fluid_scheme *s, double density);
+/* Density of a given pressure (the inverse, for initial conditions and walls). */
+double fluid_scheme_density(const fluid_scheme *s, double pressure);
+
+/* Rates at the current state: drho_dt[n], dv_dt[n * FSI_DIM] (gravity included).
+ * Returns 0, or -1 with msg (memory, a non-finite position). */
+int fluid_scheme_rates(fluid_scheme *s, fluid_particles *p, double *drho_dt, double *dv_dt,
+                       char *msg, size_t msg_size);
+
+/* Called by the main loop after each completed step (count = steps so far): e.g. the
+ * density filter. Uses the neighbour lists of the last rates call. */
+void fluid_scheme_after_step(fluid_scheme *s, fluid_particles *p, long count);
+
+/* Largest stable step for the last rates (acoustic, viscous, force limits), with the
+ * largest acceleration of a fluid particle amax. */
+double fluid_scheme_stable_dt(const fluid_scheme *s, const fluid_particles *p, double amax);
+
+/* Smoothing length h [m] (probes and messages). */
+double fluid_scheme_smoothing_length(const fluid_scheme *s);
+
+/* Gradient of the pressure (000 Eq. 13) of every particle from the last rates call,
+ * grad[n * FSI_DIM]. */
+void fluid_scheme_pressure_gradient(const fluid_scheme *s, const fluid_particles *p,
+                                    double *grad);
+
+/* The scheme's own fields of the current frame (e.g. flags of singular families). */
+int fluid_scheme_write_fields(const fluid_scheme *s, fsi_h5_writer *out);
+
+/* Pairs per particle of the last neighbour list (for the performance line). */
+long long fluid_scheme_pair_count(const fluid_scheme *s);
+
+void fluid_scheme_free(fluid_scheme *s);
+
+#endif

@@ -1,0 +1,28 @@
+/* The keys of the ULPH scheme (docs/cases.md is generated from this table). */
+#include "ulph_keys.h"
+
+#include "ulph_kernel.h"
+
+#define STR2(x) #x
+#define STR(x) STR2(x)
+
+static const fsi_key_spec keys[] = {
+    {"smoothing_factor", FSI_KEY_REAL, "-", STR(ULPH_KERNEL_H_OVER_DX), FSI_BOUND_MIN_OPEN, 0,
+     0, NULL, "Smoothing length over spacing, h / dx, of the kernel (000 Eq. 17: 1.2)."},
+    {"support_factor", FSI_KEY_REAL, "-", STR(ULPH_KERNEL_SUPPORT_FACTOR),
+     FSI_BOUND_MIN_OPEN, 0, 0, NULL,
+     "Support radius over smoothing length, delta / h (000 Eq. 17: 3)."},
+    {"artificial_viscosity", FSI_KEY_REAL, "-", "0.02", FSI_BOUND_MIN | FSI_BOUND_MAX, 0, 0.5,
+     NULL, "Coefficient alpha of the artificial viscosity of 000 Eqs. 26-27 (000: 0 to "
+     "0.5, 0.02 for the dam break of §4.2); 0 turns it off."},
+    {"density_filter_interval", FSI_KEY_INT, "-", "20", FSI_BOUND_MIN, 0, 0, NULL,
+     "Every this many steps the density is reset to the Shepard average of 000 Eq. 24 "
+     "with a first-order correction that keeps a linear density field (docs/ulph.md; "
+     "000: every 20 steps); 0 turns the filter off."},
+};
+
+const fsi_key_table fsi_ulph_keys = {
+    "ulph",
+    "Updated Lagrangian Particle Hydrodynamics (000 §2.1): the kernel, the artificial "
+    "viscosity and the density filter.",
+    keys, (int)(sizeof keys / sizeof keys[0])};

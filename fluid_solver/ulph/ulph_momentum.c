@@ -1,0 +1,98 @@
+/* Continuity and momentum of ULPH (ulph_momentum.h). */
+#include "ulph_momentum.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+#include "small_tensor.h"
+
+int ulph_momentum_reserve(ulph_momentum_scratch *s, int n)
+{
+    if (n <= s->capacity)
+        return 0;
+    ulph_momentum_free(s);
+    const size_t m = (size_t)(n > 0 ? n : 1);
+    s->velocity_gradient = malloc(m * FSI_MAT_SIZE * sizeof(double));
+    s->stress_shape = malloc(m * FSI_MAT_SIZE * sizeof(double));
+    s->divergence = malloc(m * sizeof(double));
+    if (!s->velocity_gradient || !s->stress_shape || !s->divergence) {
+        ulph_momentum_free(s);
+        return -1;
+    }
+    s->capacity = n;
+    return 0;
+}
+
+void ulph_momentum_free(ulph_momentum_scratch *s)
+{
+    free(s->velocity_gradient);
+    free(s->stress_shape);
+    free(s->divergence);
+    memset(s, 0, sizeof *s);
+}
+
+/* sigma M^-1 of particle i: sigma = -p I + 2 mu (sym L - tr L / 3 I) (000 Eqs. 3-5). */
+static void stress_shape(const ulph_operators *ops, const fluid_particles *p, double mu,
+                         const double *L, int i, double *out)
+{
+    double sigma[FSI_MAT_SIZE];
+    fsi_mat_sym(L, sigma);
+    double trace = 0.0;
+    for (int a = 0; a < FSI_DIM; a++)
+        trace += FSI_MAT(L, a, a);
+    fsi_mat_scale(sigma, 2.0 * mu);
+    for (int a = 0; a < FSI_DIM; a++)
+        FSI_MAT(sigma, a, a) -= 2.0 * mu * trace / 3.0 + p->pressure[i];
+    fsi_mat_mul(sigma, &ops->shape_inv[(size_t)i * FSI_MAT_SIZE], out);
+}
+
+void ulph_momentum_rates(const ulph_operators *ops, const ulph_momentum_params *prm,
+                         const fluid_particles *p, const double *velocity_for_viscosity,
+                         ulph_momentum_scratch *scratch, double *drho_dt, double *dv_dt)
+{
+    const int n = p->n;
+    double *L = scratch->velocity_gradient, *A = scratch->stress_shape;
+    ulph_gradient_vector(ops, velocity_for_viscosity, L);
+    /* Continuity sees the walls' own velocity (no penetration), not the virtual one. */
+    ulph_divergence(ops, p->v, scratch->divergence);
+#pragma omp parallel for schedule(static) if (n >= ULPH_PARALLEL_MIN_PARTICLES)
+    for (int i = 0; i < n; i++)
+        stress_shape(ops, p, prm->viscosity, &L[(size_t)i * FSI_MAT_SIZE], i,
+                     &A[(size_t)i * FSI_MAT_SIZE]);
+
+    const double av = prm->artificial_viscosity * prm->h * prm->c0 * prm->rho0;
+    const double eps2 = 0.01 * prm->h * prm->h;
+#pragma omp parallel for schedule(static) if (n >= ULPH_PARALLEL_MIN_PARTICLES)
+    for (int i = 0; i < n; i++) {
+        double *a_i = &dv_dt[i * FSI_DIM];
+        if (!(p->flags[i] & FLUID_PARTICLE_FLUID)) {
+            drho_dt[i] = 0.0;
+            memset(a_i, 0, FSI_DIM * sizeof *a_i);
+            continue;
+        }
+        drho_dt[i] = -p->density[i] * scratch->divergence[i];
+        double force[FSI_DIM] = {0};
+        const double *Ai = &A[(size_t)i * FSI_MAT_SIZE];
+        for (int64_t k = ops->offset[i]; k < ops->offset[i + 1]; k++) {
+            const int j = ops->neighbour[k];
+            const double *Aj = &A[(size_t)j * FSI_MAT_SIZE];
+            double xij[FSI_DIM], vx = 0.0, r2 = 0.0, sum[FSI_MAT_SIZE];
+            for (int d = 0; d < FSI_DIM; d++) {
+                xij[d] = p->x[j * FSI_DIM + d] - p->x[i * FSI_DIM + d];
+                vx += (p->v[j * FSI_DIM + d] - p->v[i * FSI_DIM + d]) * xij[d];
+                r2 += xij[d] * xij[d];
+            }
+            for (int m = 0; m < FSI_MAT_SIZE; m++)
+                sum[m] = Ai[m] + Aj[m];
+            double f[FSI_DIM];
+            fsi_mat_vec(sum, xij, f);
+            const double wv = ops->w[k] * p->volume[j];
+            /* g_IJ = w V_J M_I^-1 x_IJ (ulph_operators.h): 000 Eq. 26 per pair. */
+            const double pi_ij = vx < 0.0 ? av * vx / (r2 + eps2) : 0.0;
+            for (int d = 0; d < FSI_DIM; d++)
+                force[d] += wv * f[d] + pi_ij * ops->g[k * FSI_DIM + d];
+        }
+        for (int d = 0; d < FSI_DIM; d++)
+            a_i[d] = force[d] / p->density[i] + prm->gravity[d];
+    }
+}

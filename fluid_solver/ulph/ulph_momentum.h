@@ -1,0 +1,43 @@
+/* The rates of the ULPH fluid: continuity (000 Eq. 16) and momentum with viscous
+ * stress and artificial viscosity (000 Eqs. 23, 25-28), over the neighbour lists and
+ * shape tensors of ulph_operators. */
+#ifndef ULPH_MOMENTUM_H
+#define ULPH_MOMENTUM_H
+
+#include "fluid_particles.h"
+#include "ulph_operators.h"
+
+typedef struct {
+    double viscosity;           /* mu [Pa s] */
+    double artificial_viscosity;/* alpha of 000 Eq. 26 */
+    double h, c0, rho0;         /* smoothing length, sound speed, reference density */
+    double gravity[FSI_DIM];
+} ulph_momentum_params;
+
+/* Scratch the rates need, n particles each: velocity gradient L (FSI_MAT_SIZE),
+ * sigma M^-1 (FSI_MAT_SIZE), divergence (1). */
+typedef struct {
+    int capacity;
+    double *velocity_gradient, *stress_shape, *divergence;
+} ulph_momentum_scratch;
+
+int ulph_momentum_reserve(ulph_momentum_scratch *s, int n);
+void ulph_momentum_free(ulph_momentum_scratch *s);
+
+/* For every fluid particle I (others get zero rates):
+ *   drho_I/dt = -rho_I sum_J w V_J (v_J - v_I) . M_I^-1 x_IJ          (000 Eq. 16)
+ *   rho_I dv_I/dt = sum_J w V_J (sigma_I M_I^-1 + sigma_J M_J^-1) x_IJ + Pi_I + rho_I g
+ *                                                                  (000 Eqs. 23, 28)
+ * with sigma = -p I + tau (000 Eq. 3), tau = 2 mu e', e' = sym(L) - tr(L) / 3 I
+ * (000 Eqs. 4-5, 25; the 1/3 of a plane flow of a three-dimensional fluid, whose
+ * out-of-plane rate is zero), L the velocity gradient (000 Eq. 13) of
+ * velocity_for_viscosity (walls: 000 Eq. 50), and the artificial viscosity
+ *   Pi_I = alpha h c0 rho0 sum_J w pi_IJ M_I^-1 x_IJ V_J                 (000 Eq. 26)
+ *   pi_IJ = v_IJ . x_IJ / (|x_IJ|^2 + 0.01 h^2) if v_IJ . x_IJ < 0, else 0 (000 Eq. 27)
+ * (v_IJ = v_J - v_I: negative when I and J approach; Pi_I then pushes I away from J).
+ * Pressures, densities and volumes must be current (walls included). */
+void ulph_momentum_rates(const ulph_operators *ops, const ulph_momentum_params *prm,
+                         const fluid_particles *p, const double *velocity_for_viscosity,
+                         ulph_momentum_scratch *scratch, double *drho_dt, double *dv_dt);
+
+#endif

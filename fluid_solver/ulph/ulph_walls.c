@@ -1,0 +1,48 @@
+/* Wall particles from the fluid around them (ulph_walls.h, 000 Eqs. 50-54). */
+#include "ulph_walls.h"
+
+#include <string.h>
+
+void ulph_walls_update(const ulph_operators *ops, const ulph_eos *eos, const double *gravity,
+                       const unsigned char *free_slip, fluid_particles *p,
+                       double *velocity_for_viscosity)
+{
+    const int n = p->n;
+#pragma omp parallel for schedule(static) if (n >= ULPH_PARALLEL_MIN_PARTICLES)
+    for (int s = 0; s < n; s++) {
+        double *vv = &velocity_for_viscosity[s * FSI_DIM];
+        if (!(p->flags[s] & FLUID_PARTICLE_WALL)) {
+            memcpy(vv, &p->v[s * FSI_DIM], FSI_DIM * sizeof *vv);
+            continue;
+        }
+        double sum_w = 0.0, sum_pw = 0.0, head[FSI_DIM] = {0}, v_mean[FSI_DIM] = {0};
+        for (int64_t k = ops->offset[s]; k < ops->offset[s + 1]; k++) {
+            const int f = ops->neighbour[k];
+            if (!(p->flags[f] & FLUID_PARTICLE_FLUID))
+                continue;
+            const double w = ops->w[k];
+            sum_w += w;
+            sum_pw += p->pressure[f] * w;
+            for (int d = 0; d < FSI_DIM; d++) {
+                head[d] += p->density[f] * (p->x[s * FSI_DIM + d] - p->x[f * FSI_DIM + d]) * w;
+                v_mean[d] += p->v[f * FSI_DIM + d] * w;
+            }
+        }
+        double pressure = 0.0;
+        if (sum_w > 0.0) {
+            /* The wall is fixed: a_S = 0 in (g - a_S) of 000 Eq. 52. */
+            pressure = sum_pw;
+            for (int d = 0; d < FSI_DIM; d++) {
+                pressure += gravity[d] * head[d];
+                v_mean[d] /= sum_w;
+            }
+            pressure /= sum_w;
+        }
+        p->pressure[s] = pressure;
+        p->density[s] = ulph_eos_density(eos, pressure);
+        p->mass[s] = p->density[s] * p->volume[s];
+        for (int d = 0; d < FSI_DIM; d++)
+            vv[d] = free_slip && free_slip[s] ? v_mean[d]
+                                               : 2.0 * p->v[s * FSI_DIM + d] - v_mean[d];
+    }
+}

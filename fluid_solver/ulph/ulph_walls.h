@@ -1,0 +1,24 @@
+/* Fixed ghost wall particles (000 §2.3): their pressure, density, mass and the
+ * velocity they show the viscous stress, interpolated from the fluid particles in
+ * their support at every evaluation of the rates. */
+#ifndef ULPH_WALLS_H
+#define ULPH_WALLS_H
+
+#include "fluid_particles.h"
+#include "ulph_eos.h"
+#include "ulph_operators.h"
+
+/* For every wall particle S with fluid neighbours f (weights w_Sf of the last
+ * ulph_operators_update):
+ *   p_S = (sum_f p_f w_Sf + (g - a_S) . sum_f rho_f (x_S - x_f) w_Sf) / sum_f w_Sf
+ *                                                          (000 Eq. 52, a_S = 0: fixed)
+ *   rho_S from the equation of state (000 Eq. 53, ulph_eos.h), m_S = rho_S V0 (Eq. 54)
+ *   v~_S = sum_f v_f w_Sf / sum_f w_Sf                     (000 Eq. 51)
+ *   velocity_for_viscosity_S = 2 v_S - v~_S  (no-slip, 000 Eq. 50)  or  v~_S (free-slip)
+ * A wall particle without fluid neighbours gets p = 0, rho = rho0 and v~ = 0. For fluid
+ * particles velocity_for_viscosity is their velocity. */
+void ulph_walls_update(const ulph_operators *ops, const ulph_eos *eos, const double *gravity,
+                       const unsigned char *free_slip, fluid_particles *p,
+                       double *velocity_for_viscosity);
+
+#endif
