@@ -9,7 +9,8 @@
 # particles, RMS of (Z_sim - Z_exp) / Z_exp, wall time, particle-steps/s from the fluid's
 # performance line) and OUT/f1_dam_break.png (bench/f1_dam_break.py). --resume keeps the
 # runs of OUT that finished. --set is passed to every run (e.g. fluid.sound_speed=...).
-# Default N = 20 30 40 on 2 threads (a / 20: about 1.5 min; a / 40: about 12 min).
+# Default N = 15 20 30 on 2 threads (with cfl_acoustic = 0.1: a / 20 about 4 min, a / 30
+# about 15 min).
 set -euo pipefail
 
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -17,7 +18,7 @@ RUN="$ROOT/build/bin/fsi-run"
 PY=/usr/bin/python3
 CASE="$ROOT/cases/f1_dam_break.ini"
 OUT="$ROOT/out/bench/f1_dam_break"
-NS="20 30 40"
+NS="15 20 30"
 RESUME=0
 THREADS=2
 EXTRA=()
@@ -69,14 +70,17 @@ done
 
 REPORT="$OUT/f1_dam_break.md"
 {
-  echo "| dx | a / dx | fluid particles | points | RMS (Z_sim - Z_exp) / Z_exp | end | wall time | particle-steps/s |"
-  echo "| --- | --- | --- | --- | --- | --- | --- | --- |"
+  echo "| dx | a / dx | fluid particles | points | RMS (Z_sim - Z_exp) / Z_exp | end | wall time | threads | particle-steps/s |"
+  echo "| --- | --- | --- | --- | --- | --- | --- | --- | --- |"
   tail -n +2 "$OUT/f1_dam_break.csv" | while IFS=, read -r run dx ratio n pts rms; do
     txt="$run.txt"
-    wt=$(awk '/^wall_time_s/ {print $2}' "$txt" | tail -1)
+    wt=$(sed -n 's/^fsi run: finished in \([0-9.]*\) s.*/\1/p' "$txt" | tail -1)
+    [ -n "$wt" ] || wt=$(awk '/^wall_time_s/ {print $2}' "$txt" | tail -1)
+    thr=$(grep -o 'on [0-9]* thread(s)' "$run/fluid.log" | tail -1 | awk '{print $2}')
     pss=$(grep -o '([0-9.e+]* particle-steps/s)' "$run/fluid.log" | tail -1 | tr -d '()' | awk '{print $1}')
-    if grep -q "^fsi run: finished" "$txt"; then endst="t = 0.5 s"; else endst="failed (see log)"; fi
-    echo "| $dx m | $ratio | $n | $pts / 15 | $(calc "'%.1f %%' % (100 * $rms)") | $endst | ${wt} s | ${pss:-?} |"
+    tend=$(grep "^$run " "$OUT/f1_dam_break.txt" | grep -o "t_end=[0-9.]*" | cut -d= -f2)
+    if grep -q "^fsi run: finished" "$txt"; then endst="t = $tend s"; else endst="unstable, last frame t = $tend s"; fi
+    echo "| $dx m | $ratio | $n | $pts / 15 | $(calc "'%.1f %%' % (100 * $rms)") | $endst | ${wt} s | ${thr:-?} | ${pss:-?} |"
   done
 } > "$REPORT"
 cat "$REPORT"
