@@ -3,12 +3,13 @@
 # column a = 0.05715 m wide, 2a high of Martin & Moyce 1952 (n^2 = 2, a = 2.25 in), at
 # several resolutions dx = a / N, and the surge front against the data.
 #
-#   bench/f1_dam_break.sh [OUT] [--n "20 30 40"] [--resume] [--threads T] [--set k=v ...]
+#   bench/f1_dam_break.sh [OUT] [--n "15 20 30"] [--resume | --report] [--threads T] [--set k=v ...]
 #
 # Each run's output is OUT/nN (log OUT/nN.txt); writes OUT/f1_dam_break.md (dx, fluid
 # particles, RMS of (Z_sim - Z_exp) / Z_exp, wall time, particle-steps/s from the fluid's
 # performance line) and OUT/f1_dam_break.png (bench/f1_dam_break.py). --resume keeps the
-# runs of OUT that finished. --set is passed to every run (e.g. fluid.sound_speed=...).
+# runs of OUT that finished; --report runs nothing and compares the runs in OUT (finished
+# or not). --set is passed to every run (e.g. fluid.sound_speed=...).
 # Default N = 15 20 30 on 2 threads (with cfl_acoustic = 0.1: a / 20 about 4 min, a / 30
 # about 15 min).
 set -euo pipefail
@@ -26,6 +27,7 @@ while [ $# -gt 0 ]; do
   case "$1" in
     --n) NS="$2"; shift ;;
     --resume) RESUME=1 ;;
+    --report) RESUME=2 ;;
     --threads) THREADS="$2"; shift ;;
     --set) EXTRA+=(--set "$2"); shift ;;
     -*) echo "f1_dam_break: unknown option $1" >&2; exit 2 ;;
@@ -42,7 +44,8 @@ DIRS=()
 for n in $NS; do
   name="n$n"
   DIRS+=("$OUT/$name")
-  if [ "$RESUME" = 1 ] && grep -q "^fsi run: finished" "$OUT/$name.txt" 2>/dev/null; then
+  if { [ "$RESUME" = 1 ] && grep -q "^fsi run: finished" "$OUT/$name.txt" 2>/dev/null; } ||
+     { [ "$RESUME" = 2 ] && [ -f "$OUT/$name/fluid.h5" ]; }; then
     log "$name: kept from an earlier run"
     continue
   fi
@@ -76,6 +79,7 @@ REPORT="$OUT/f1_dam_break.md"
     txt="$run.txt"
     wt=$(sed -n 's/^fsi run: finished in \([0-9.]*\) s.*/\1/p' "$txt" | tail -1)
     [ -n "$wt" ] || wt=$(awk '/^wall_time_s/ {print $2}' "$txt" | tail -1)
+    [ -n "$wt" ] || wt=$(sed -n 's/^fsi run: run failed.* after \([0-9.]*\) s.*/\1/p' "$txt" | tail -1)
     thr=$(grep -o 'on [0-9]* thread(s)' "$run/fluid.log" | tail -1 | awk '{print $2}')
     pss=$(grep -o '([0-9.e+]* particle-steps/s)' "$run/fluid.log" | tail -1 | tr -d '()' | awk '{print $1}')
     tend=$(grep "^$run " "$OUT/f1_dam_break.txt" | grep -o "t_end=[0-9.]*" | cut -d= -f2)
