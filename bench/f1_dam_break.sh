@@ -1,0 +1,91 @@
+#!/usr/bin/env bash
+# F1 dam break (docs/benchmarks.md F1, docs/validation.md F1): cases/f1_dam_break.ini, the
+# column a = 0.05715 m wide, 2a high of Martin & Moyce 1952 (n^2 = 2, a = 2.25 in), at
+# several resolutions dx = a / N, and the surge front against the data.
+#
+#   bench/f1_dam_break.sh [OUT] [--n "15 20 30"] [--resume | --report] [--threads T] [--set k=v ...]
+#
+# Each run's output is OUT/nN (log OUT/nN.txt); writes OUT/f1_dam_break.md (dx, fluid
+# particles, RMS of (Z_sim - Z_exp) / Z_exp, wall time, particle-steps/s from the fluid's
+# performance line) and OUT/f1_dam_break.png (bench/f1_dam_break.py). --resume keeps the
+# runs of OUT that finished; --report runs nothing and compares the runs in OUT (finished
+# or not). --set is passed to every run (e.g. fluid.sound_speed=...).
+# Default N = 15 20 30 on 2 threads (with cfl_acoustic = 0.1: a / 20 about 4 min, a / 30
+# about 15 min).
+set -euo pipefail
+
+ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+RUN="$ROOT/build/bin/fsi-run"
+PY=/usr/bin/python3
+CASE="$ROOT/cases/f1_dam_break.ini"
+OUT="$ROOT/out/bench/f1_dam_break"
+NS="15 20 30"
+RESUME=0
+THREADS=2
+EXTRA=()
+while [ $# -gt 0 ]; do
+  case "$1" in
+    --n) NS="$2"; shift ;;
+    --resume) RESUME=1 ;;
+    --report) RESUME=2 ;;
+    --threads) THREADS="$2"; shift ;;
+    --set) EXTRA+=(--set "$2"); shift ;;
+    -*) echo "f1_dam_break: unknown option $1" >&2; exit 2 ;;
+    *) OUT="$1" ;;
+  esac
+  shift
+done
+mkdir -p "$OUT"
+log() { echo "[f1_dam_break] $*" >&2; }
+A=0.05715          # column width a (m); the case's lengths are multiples of a
+calc() { "$PY" -c "print($1)"; }
+
+DIRS=()
+for n in $NS; do
+  name="n$n"
+  DIRS+=("$OUT/$name")
+  if { [ "$RESUME" = 1 ] && grep -q "^fsi run: finished" "$OUT/$name.txt" 2>/dev/null; } ||
+     { [ "$RESUME" = 2 ] && [ -f "$OUT/$name/fluid.h5" ]; }; then
+    log "$name: kept from an earlier run"
+    continue
+  fi
+  dx=$(calc "$A / $n")
+  w=$(calc "4 * $A / $n")               # walls four layers thick
+  xr=$(calc "16 * $A")                  # tank 16 a long
+  log "$name: dx = a / $n = $dx m ..."
+  start=$(date +%s.%N)
+  set +e
+  "$RUN" "$CASE" --out "$OUT/$name" --force --threads "$THREADS" \
+    --set "fluid.spacing=$dx" \
+    --set "fluid.wall bottom.min=-$w,-$w" --set "fluid.wall bottom.max=$(calc "$xr + $w"),0" \
+    --set "fluid.wall left.min=-$w,0" \
+    --set "fluid.wall right.max=$(calc "$xr + $w"),$(calc "4 * $A")" \
+    "${EXTRA[@]}" > "$OUT/$name.txt" 2>&1
+  rc=$?
+  set -e
+  end=$(date +%s.%N)
+  echo "wall_time_s $(calc "round($end - $start, 1)")" >> "$OUT/$name.txt"
+  [ $rc = 0 ] || log "$name: run failed (exit $rc), see $OUT/$name.txt; its frames are still compared"
+done
+
+"$PY" "$ROOT/bench/f1_dam_break.py" --png "$OUT/f1_dam_break.png" \
+  --csv-out "$OUT/f1_dam_break.csv" "${DIRS[@]}" | tee "$OUT/f1_dam_break.txt"
+
+REPORT="$OUT/f1_dam_break.md"
+{
+  echo "| dx | a / dx | fluid particles | points | RMS (Z_sim - Z_exp) / Z_exp | end | wall time | threads | particle-steps/s |"
+  echo "| --- | --- | --- | --- | --- | --- | --- | --- | --- |"
+  tail -n +2 "$OUT/f1_dam_break.csv" | while IFS=, read -r run dx ratio n pts rms; do
+    txt="$run.txt"
+    wt=$(sed -n 's/^fsi run: finished in \([0-9.]*\) s.*/\1/p' "$txt" | tail -1)
+    [ -n "$wt" ] || wt=$(awk '/^wall_time_s/ {print $2}' "$txt" | tail -1)
+    [ -n "$wt" ] || wt=$(sed -n 's/^fsi run: run failed.* after \([0-9.]*\) s.*/\1/p' "$txt" | tail -1)
+    thr=$(grep -o 'on [0-9]* thread(s)' "$run/fluid.log" | tail -1 | awk '{print $2}')
+    pss=$(grep -o '([0-9.e+]* particle-steps/s)' "$run/fluid.log" | tail -1 | tr -d '()' | awk '{print $1}')
+    tend=$(grep "^$run " "$OUT/f1_dam_break.txt" | grep -o "t_end=[0-9.]*" | cut -d= -f2)
+    if grep -q "^fsi run: finished" "$txt"; then endst="t = $tend s"; else endst="unstable, last frame t = $tend s"; fi
+    echo "| $dx m | $ratio | $n | $pts / 15 | $(calc "'%.1f %%' % (100 * $rms)") | $endst | ${wt} s | ${thr:-?} | ${pss:-?} |"
+  done
+} > "$REPORT"
+cat "$REPORT"
+log "report: $REPORT, plot: $OUT/f1_dam_break.png"
