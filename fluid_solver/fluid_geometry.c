@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "case_check.h"
+#include "lattice_box.h"
 
 static void read_vector(const fsi_case *c, const char *section, const char *key, double *out)
 {
@@ -25,12 +26,8 @@ static void read_box(fluid_box *b, const fsi_case *c, const char *section, doubl
     b->free_slip = is_wall && fsi_case_get_bool(c, section, "free_slip", 0);
     read_vector(c, section, "min", b->min);
     read_vector(c, section, "max", b->max);
-    for (int d = 0; d < FSI_DIM; d++) {
-        /* The check refuses sizes that are not whole numbers of spacings; rounding
-         * keeps an unchecked case from misbehaving. */
-        double n = spacing > 0 ? fluid_box_spacings(b, spacing, d) : 0.0;
-        b->count[d] = n > 0.5 ? lround(fmin(n, 1e9)) : 0;
-    }
+    for (int d = 0; d < FSI_DIM; d++)
+        b->count[d] = fsi_lattice_count(b->min[d], b->max[d], spacing);
 }
 
 int fluid_geometry_read(fluid_geometry *g, const fsi_case *c, const char *role, char *msg,
@@ -88,10 +85,7 @@ double fluid_box_spacings(const fluid_box *b, double spacing, int axis)
 
 static double box_points(const fluid_box *b)
 {
-    double n = 1.0;
-    for (int d = 0; d < FSI_DIM; d++)
-        n *= (double)b->count[d];
-    return n;
+    return fsi_lattice_points(b->count);
 }
 
 double fluid_geometry_lattice_size(const fluid_geometry *g)
@@ -104,19 +98,12 @@ double fluid_geometry_lattice_size(const fluid_geometry *g)
 
 double fluid_boxes_overlap(const fluid_box *a, const fluid_box *b)
 {
-    double width = INFINITY;
-    for (int d = 0; d < FSI_DIM; d++)
-        width = fmin(width, fmin(a->max[d], b->max[d]) - fmax(a->min[d], b->min[d]));
-    return width;
+    return fsi_boxes_overlap(a->min, a->max, b->min, b->max);
 }
 
 int fluid_box_contains(const fluid_box *b, double spacing, const double *x)
 {
-    double tol = FLUID_GEOMETRY_TOL * spacing;
-    for (int d = 0; d < FSI_DIM; d++)
-        if (x[d] < b->min[d] - tol || x[d] > b->max[d] + tol)
-            return 0;
-    return 1;
+    return fsi_box_contains(b->min, b->max, FLUID_GEOMETRY_TOL * spacing, x);
 }
 
 int fluid_geometry_build(const fluid_geometry *g, double density, fluid_particles *p,
@@ -143,12 +130,7 @@ int fluid_geometry_build(const fluid_geometry *g, double density, fluid_particle
         const fluid_box *box = &g->boxes[b];
         long nb = (long)box_points(box);
         for (long j = 0; j < nb; j++, i++) {
-            long rest = j;
-            for (int d = 0; d < FSI_DIM; d++) {
-                long k = rest % box->count[d];
-                rest /= box->count[d];
-                p->x[i * FSI_DIM + d] = box->min[d] + ((double)k + 0.5) * g->spacing;
-            }
+            fsi_lattice_point(box->min, box->count, g->spacing, j, p->x + i * FSI_DIM);
             p->id[i] = i;
             p->volume[i] = volume;
             p->mass[i] = density * volume;

@@ -1,5 +1,6 @@
 /* Lattice from blocks, region selection, particles (geometry.h). */
 #include "geometry.h"
+#include "lattice_box.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -50,14 +51,8 @@ int solid_geometry_read(solid_geometry *g, const fsi_case *c, const char *role, 
         b->section = blocks[i];
         read_vector(c, b->section, "min", b->min);
         read_vector(c, b->section, "max", b->max);
-        for (int d = 0; d < FSI_DIM; d++) {
-            /* The check rejects sizes that are not whole numbers of spacings; here
-             * the nearest whole number keeps an unchecked case from misbehaving. */
-            double n = g->spacing > 0 ? solid_block_spacings(b, g->spacing, d) : 0.0;
-            /* Capped so that products of counts stay far from overflow; such a block
-             * is refused anyway (solid_geometry_lattice_size). */
-            b->count[d] = n > 0.5 ? lround(fmin(n, 1e9)) : 0;
-        }
+        for (int d = 0; d < FSI_DIM; d++)
+            b->count[d] = fsi_lattice_count(b->min[d], b->max[d], g->spacing);
     }
     g->n_regions = nr;
     for (int i = 0; i < nr; i++) {
@@ -107,28 +102,17 @@ double solid_block_spacings(const solid_block *b, double spacing, int axis)
 
 long solid_block_points(const solid_block *b)
 {
-    long n = 1;
-    for (int d = 0; d < FSI_DIM; d++)
-        n *= b->count[d];
-    return n;
+    return (long)fsi_lattice_points(b->count);
 }
 
 void solid_block_point(const solid_block *b, double spacing, long j, double *x)
 {
-    for (int d = 0; d < FSI_DIM; d++) {
-        long i = j % b->count[d];
-        j /= b->count[d];
-        x[d] = b->min[d] + ((double)i + 0.5) * spacing;
-    }
+    fsi_lattice_point(b->min, b->count, spacing, j, x);
 }
 
 int solid_region_contains(const solid_region *r, double spacing, const double *x)
 {
-    double tol = SOLID_GEOMETRY_TOL * spacing;
-    for (int d = 0; d < FSI_DIM; d++)
-        if (x[d] < r->min[d] - tol || x[d] > r->max[d] + tol)
-            return 0;
-    return 1;
+    return fsi_box_contains(r->min, r->max, SOLID_GEOMETRY_TOL * spacing, x);
 }
 
 int solid_geometry_removed(const solid_geometry *g, const double *x)
@@ -142,12 +126,7 @@ int solid_geometry_removed(const solid_geometry *g, const double *x)
 
 double solid_blocks_overlap(const solid_block *a, const solid_block *b)
 {
-    double width = INFINITY;
-    for (int d = 0; d < FSI_DIM; d++) {
-        double lo = fmax(a->min[d], b->min[d]), hi = fmin(a->max[d], b->max[d]);
-        width = fmin(width, hi - lo);
-    }
-    return width;
+    return fsi_boxes_overlap(a->min, a->max, b->min, b->max);
 }
 
 void solid_particles_free(solid_particles *p)
