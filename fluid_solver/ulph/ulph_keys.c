@@ -19,6 +19,10 @@ static const fsi_key_spec keys[] = {
      "Every this many steps the density is reset to the Shepard average of 000 Eq. 24 "
      "with a first-order correction that keeps a linear density field (docs/ulph.md; "
      "000: every 20 steps); 0 turns the filter off."},
+    {"tension", FSI_KEY_BOOL, "-", "false", 0, 0, 0, NULL,
+     "false: the water does not sustain tension, a fluid particle's density is kept at or "
+     "above rho0 (p >= 0, gauge against the atmosphere above a free surface; docs/ulph.md); "
+     "true: the Tait equation both ways (000 Eq. 6)."},
 };
 
 const fsi_key_table fsi_ulph_keys = {

@@ -79,7 +79,7 @@ void ulph_momentum_rates(const ulph_operators *ops, const ulph_momentum_params *
             double xij[FSI_DIM], vx = 0.0, r2 = 0.0, sum[FSI_MAT_SIZE];
             for (int d = 0; d < FSI_DIM; d++) {
                 xij[d] = p->x[j * FSI_DIM + d] - p->x[i * FSI_DIM + d];
-                vx += (p->v[j * FSI_DIM + d] - p->v[i * FSI_DIM + d]) * xij[d];
+                vx += (velocity_for_viscosity[j * FSI_DIM + d] - p->v[i * FSI_DIM + d]) * xij[d];
                 r2 += xij[d] * xij[d];
             }
             for (int m = 0; m < FSI_MAT_SIZE; m++)
@@ -89,8 +89,12 @@ void ulph_momentum_rates(const ulph_operators *ops, const ulph_momentum_params *
             const double wv = ops->w[k] * p->volume[j];
             /* g_IJ = w V_J M_I^-1 x_IJ (ulph_operators.h): 000 Eq. 26 per pair. */
             const double pi_ij = vx < 0.0 ? av * vx / (r2 + eps2) : 0.0;
+            /* A wall pushes, never pulls: with p_I < 0 the pair's -p_I M_I^-1 term
+             * would draw I into the wall, so p_I counts as 0 against a wall. */
+            const double tension = p->pressure[i] < 0.0 && !(p->flags[j] & FLUID_PARTICLE_FLUID)
+                                       ? p->pressure[i] : 0.0;
             for (int d = 0; d < FSI_DIM; d++)
-                force[d] += wv * f[d] + pi_ij * ops->g[k * FSI_DIM + d];
+                force[d] += wv * f[d] + (pi_ij + tension) * ops->g[k * FSI_DIM + d];
         }
         for (int d = 0; d < FSI_DIM; d++)
             a_i[d] = force[d] / p->density[i] + prm->gravity[d];

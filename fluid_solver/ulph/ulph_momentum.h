@@ -34,7 +34,12 @@ void ulph_momentum_free(ulph_momentum_scratch *s);
  * velocity_for_viscosity (walls: 000 Eq. 50), and the artificial viscosity
  *   Pi_I = alpha h c0 rho0 sum_J w pi_IJ M_I^-1 x_IJ V_J                 (000 Eq. 26)
  *   pi_IJ = v_IJ . x_IJ / (|x_IJ|^2 + 0.01 h^2) if v_IJ . x_IJ < 0, else 0 (000 Eq. 27)
- * (v_IJ = v_J - v_I: negative when I and J approach; Pi_I then pushes I away from J).
+ * (v_IJ = v_J - v_I: negative when I and J approach; Pi_I then pushes I away from J),
+ * v_J of a wall particle being its velocity_for_viscosity (the mirrored velocity of
+ * 000 Eq. 50), so that a wall resists a fluid particle's approach in both slip modes.
+ * A wall pushes, never pulls: against a wall or moving boundary particle a fluid
+ * particle's pressure counts as max(p_I, 0) (with tension = true p_I may be negative,
+ * and -p_I M_I^-1 would draw I into the wall).
  * Pressures, densities and volumes must be current (walls included). */
 void ulph_momentum_rates(const ulph_operators *ops, const ulph_momentum_params *prm,
                          const fluid_particles *p, const double *velocity_for_viscosity,

@@ -34,6 +34,7 @@ struct fluid_scheme {
     double cfl_acoustic, cfl_viscous, cfl_force;
     long filter_interval;
     int filter_due;
+    int tension;
 };
 
 fluid_scheme *fluid_scheme_create(const fsi_case *c, const char *role,
@@ -65,6 +66,7 @@ fluid_scheme *fluid_scheme_create(const fsi_case *c, const char *role,
     s->cfl_viscous = fsi_case_get_real(c, role, "cfl_viscous", 0.125);
     s->cfl_force = fsi_case_get_real(c, role, "cfl_force", 0.25);
     s->filter_interval = fsi_case_get_int(c, role, "density_filter_interval", 20);
+    s->tension = fsi_case_get_bool(c, role, "tension", 0);
     fsi_grid_init(&s->grid);
     ulph_operators_init(&s->ops);
     const size_t n = (size_t)(p->n > 0 ? p->n : 1);
@@ -114,6 +116,11 @@ static void fluid_state(const fluid_scheme *s, fluid_particles *p)
 #pragma omp parallel for schedule(static) if (n >= ULPH_PARALLEL_MIN_PARTICLES)
     for (int i = 0; i < n; i++)
         if (p->flags[i] & FLUID_PARTICLE_FLUID) {
+            /* Without tension, p >= 0 (docs/ulph.md "Tension"): a stretched front
+             * keeps its stiffness instead of a density deficit that no pressure
+             * restores and that lets it sink into a wall. */
+            if (!s->tension && p->density[i] < s->eos.rho0)
+                p->density[i] = s->eos.rho0;
             p->pressure[i] = ulph_eos_pressure(&s->eos, p->density[i]);
             p->volume[i] = p->mass[i] / p->density[i];
         }

@@ -1,6 +1,7 @@
 /* Wall particles from the fluid around them (ulph_walls.h, 000 Eqs. 50-54). */
 #include "ulph_walls.h"
 
+#include <math.h>
 #include <string.h>
 
 void ulph_walls_update(const ulph_operators *ops, const ulph_eos *eos, const double *gravity,
@@ -16,6 +17,7 @@ void ulph_walls_update(const ulph_operators *ops, const ulph_eos *eos, const dou
             continue;
         }
         double sum_w = 0.0, sum_pw = 0.0, head[FSI_DIM] = {0}, v_mean[FSI_DIM] = {0};
+        double toward[FSI_DIM] = {0};
         for (int64_t k = ops->offset[s]; k < ops->offset[s + 1]; k++) {
             const int f = ops->neighbour[k];
             if (!(p->flags[f] & FLUID_PARTICLE_FLUID))
@@ -25,6 +27,7 @@ void ulph_walls_update(const ulph_operators *ops, const ulph_eos *eos, const dou
             sum_pw += p->pressure[f] * w;
             for (int d = 0; d < FSI_DIM; d++) {
                 head[d] += p->density[f] * (p->x[s * FSI_DIM + d] - p->x[f * FSI_DIM + d]) * w;
+                toward[d] += (p->x[f * FSI_DIM + d] - p->x[s * FSI_DIM + d]) * w;
                 v_mean[d] += p->v[f * FSI_DIM + d] * w;
             }
         }
@@ -38,11 +41,23 @@ void ulph_walls_update(const ulph_operators *ops, const ulph_eos *eos, const dou
             }
             pressure /= sum_w;
         }
-        p->pressure[s] = pressure;
+        p->pressure[s] = pressure = fmax(pressure, 0.0);
         p->density[s] = ulph_eos_density(eos, pressure);
         p->mass[s] = p->density[s] * p->volume[s];
-        for (int d = 0; d < FSI_DIM; d++)
-            vv[d] = free_slip && free_slip[s] ? v_mean[d]
-                                               : 2.0 * p->v[s * FSI_DIM + d] - v_mean[d];
+        if (free_slip && free_slip[s]) {
+            double norm = 0.0, vn = 0.0;
+            for (int d = 0; d < FSI_DIM; d++)
+                norm += toward[d] * toward[d];
+            norm = sqrt(norm);
+            for (int d = 0; d < FSI_DIM; d++) {
+                toward[d] = norm > 0.0 ? toward[d] / norm : 0.0;
+                vn += (v_mean[d] - p->v[s * FSI_DIM + d]) * toward[d];
+            }
+            for (int d = 0; d < FSI_DIM; d++)
+                vv[d] = v_mean[d] - 2.0 * vn * toward[d];
+        } else {
+            for (int d = 0; d < FSI_DIM; d++)
+                vv[d] = 2.0 * p->v[s * FSI_DIM + d] - v_mean[d];
+        }
     }
 }

@@ -10,13 +10,21 @@
 
 /* For every wall particle S with fluid neighbours f (weights w_Sf of the last
  * ulph_operators_update):
- *   p_S = (sum_f p_f w_Sf + (g - a_S) . sum_f rho_f (x_S - x_f) w_Sf) / sum_f w_Sf
+ *   p_S = max(0, (sum_f p_f w_Sf + (g - a_S) . sum_f rho_f (x_S - x_f) w_Sf) / sum_f w_Sf)
  *                                                          (000 Eq. 52, a_S = 0: fixed)
  *   rho_S from the equation of state (000 Eq. 53, ulph_eos.h), m_S = rho_S V0 (Eq. 54)
  *   v~_S = sum_f v_f w_Sf / sum_f w_Sf                     (000 Eq. 51)
- *   velocity_for_viscosity_S = 2 v_S - v~_S  (no-slip, 000 Eq. 50)  or  v~_S (free-slip)
- * A wall particle without fluid neighbours gets p = 0, rho = rho0 and v~ = 0. For fluid
- * particles velocity_for_viscosity is their velocity. */
+ *   velocity_for_viscosity_S = 2 v_S - v~_S                (no-slip, 000 Eq. 50)
+ *                            = v~_S - 2 ((v~_S - v_S) . n_S) n_S   (free-slip)
+ * with n_S the unit vector from S towards the weighted centre of its fluid neighbours.
+ * The bound p_S >= 0 is "a wall pushes, never pulls": a wall cannot hold water by
+ * suction, and a negative p_S (a stretched layer over the wall) drew the F1 front
+ * into the floor. Free-slip mirrors only the normal velocity: the tangential one is the
+ * fluid's (no shear), the normal one is reversed, so the viscous and artificial
+ * viscous terms still resist an approach (with v~_S alone nothing did and the F1 front
+ * sank through the floor). A wall particle without fluid neighbours gets p = 0,
+ * rho = rho0 and v~ = 0. For fluid particles velocity_for_viscosity is their
+ * velocity. */
 void ulph_walls_update(const ulph_operators *ops, const ulph_eos *eos, const double *gravity,
                        const unsigned char *free_slip, fluid_particles *p,
                        double *velocity_for_viscosity);
