@@ -18,6 +18,7 @@
 
 #include <stdint.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "dim.h"
 
@@ -82,6 +83,31 @@ static inline int fluid_particles_alloc(fluid_particles *p, int n, double spacin
         fluid_particles_free(p);
         return -1;
     }
+    return 0;
+}
+
+/* Grows or shrinks p to n particles, keeping the first min(n, p->n) and zeroing the
+ * new ones. Returns 0, or -1 (p unchanged) when memory runs out or n is negative. */
+static inline int fluid_particles_resize(fluid_particles *p, int n)
+{
+    if (n < 0)
+        return -1;
+    if (n == p->n)
+        return 0;
+    fluid_particles q;
+    if (fluid_particles_alloc(&q, n, p->spacing) != 0)
+        return -1;
+    const size_t keep = (size_t)(n < p->n ? n : p->n);
+    memcpy(q.id, p->id, keep * sizeof *q.id);
+    memcpy(q.x, p->x, keep * FSI_DIM * sizeof *q.x);
+    memcpy(q.v, p->v, keep * FSI_DIM * sizeof *q.v);
+    memcpy(q.mass, p->mass, keep * sizeof *q.mass);
+    memcpy(q.volume, p->volume, keep * sizeof *q.volume);
+    memcpy(q.density, p->density, keep * sizeof *q.density);
+    memcpy(q.pressure, p->pressure, keep * sizeof *q.pressure);
+    memcpy(q.flags, p->flags, keep * sizeof *q.flags);
+    fluid_particles_free(p);
+    *p = q;
     return 0;
 }
 

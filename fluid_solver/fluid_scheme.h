@@ -9,7 +9,9 @@
  *     (m / rho) from density, and returns drho/dt and dv/dt;
  *   - wall particles: the scheme sets their pressure, density and mass (the fixed ghost
  *     boundary of 000 §2.3); their rates are zero (they do not move).
- * Rates of any other particle are zero. */
+ * Rates of any other particle are zero. The number of particles may change between
+ * calls (the moving boundary set at the tail, fluid_boundary.h): a scheme sizes its
+ * per-particle scratch to p->n at every call. */
 #ifndef FSI_FLUID_SCHEME_H
 #define FSI_FLUID_SCHEME_H
 

@@ -35,7 +35,30 @@ struct fluid_scheme {
     long filter_interval;
     int filter_due;
     int tension;
+    int capacity; /* particles the scratch arrays hold */
 };
+
+/* Room for n particles in the per-particle scratch: the moving boundary set changes
+ * size between windows (fluid_boundary.h). 0, or -1 when memory runs out. */
+static int reserve(fluid_scheme *s, int n)
+{
+    if (n <= s->capacity && s->velocity_for_viscosity)
+        return 0;
+    const size_t cap = (size_t)n + (size_t)n / 4 + 16;
+    double *vv = realloc(s->velocity_for_viscosity, cap * FSI_DIM * sizeof *vv);
+    if (vv)
+        s->velocity_for_viscosity = vv;
+    double *filtered = realloc(s->filtered, cap * sizeof *filtered);
+    if (filtered)
+        s->filtered = filtered;
+    double *grad = realloc(s->density_gradient, cap * FSI_DIM * sizeof *grad);
+    if (grad)
+        s->density_gradient = grad;
+    if (!vv || !filtered || !grad || ulph_momentum_reserve(&s->scratch, (int)cap) != 0)
+        return -1;
+    s->capacity = (int)cap;
+    return 0;
+}
 
 fluid_scheme *fluid_scheme_create(const fsi_case *c, const char *role,
                                   const fluid_properties *props, const fluid_particles *p,
@@ -69,12 +92,7 @@ fluid_scheme *fluid_scheme_create(const fsi_case *c, const char *role,
     s->tension = fsi_case_get_bool(c, role, "tension", 0);
     fsi_grid_init(&s->grid);
     ulph_operators_init(&s->ops);
-    const size_t n = (size_t)(p->n > 0 ? p->n : 1);
-    s->velocity_for_viscosity = malloc(n * FSI_DIM * sizeof(double));
-    s->filtered = malloc(n * sizeof(double));
-    s->density_gradient = malloc(n * FSI_DIM * sizeof(double));
-    if (!s->velocity_for_viscosity || !s->filtered || !s->density_gradient ||
-        ulph_momentum_reserve(&s->scratch, p->n) != 0) {
+    if (reserve(s, p->n) != 0) {
         fluid_scheme_free(s);
         snprintf(msg, msg_size, "out of memory for the ULPH scheme of %d particles", p->n);
         return NULL;
@@ -170,6 +188,10 @@ static void density_filter(fluid_scheme *s, fluid_particles *p)
 int fluid_scheme_rates(fluid_scheme *s, fluid_particles *p, double *drho_dt, double *dv_dt,
                        char *msg, size_t msg_size)
 {
+    if (reserve(s, p->n) != 0) {
+        snprintf(msg, msg_size, "out of memory for the ULPH scheme of %d particles", p->n);
+        return -1;
+    }
     fluid_state(s, p);
     if (fsi_grid_build(&s->grid, p->x, p->n, s->kernel.support) != 0 ||
         ulph_operators_update(&s->ops, &s->kernel, &s->grid, p) != 0) {
