@@ -10,8 +10,11 @@ particles below the floor count too), with a = the column width (the water block
 x extent) and dx the case's spacing. Z / a against T = t sqrt(2 g / a) is compared with
 the data: Z_sim is interpolated linearly in time between the frames at the measured T,
 and the error is RMS over the measured points of (Z_sim - Z_exp) / Z_exp (only points
-within the simulated time; their number is printed). One line per run:
-    RUN_DIR dx=... particles=... points=... rms=...
+within the simulated time; their number is printed). It also counts the fluid particles
+whose centre is deeper than dx / 2 inside a wall's box (past the centres of the wall's
+first row of particles; walls: the [fluid.wall] boxes of the case), the largest count
+over the frames and the count in the last frame. One line per run:
+    RUN_DIR dx=... particles=... points=... rms=... in_walls_max=... in_walls_end=...
 and a PNG with every run's curve and the data.
 """
 import argparse
@@ -41,7 +44,7 @@ def vec(text):
 
 
 def surge_front(run_dir):
-    """(dx, a, g, n_fluid, times, fronts) of one run."""
+    """(dx, a, g, n_fluid, times, fronts, in_walls) of one run."""
     import h5py
     case = fsi_results.read_case(run_dir)
     fl = case["fluid"]
@@ -53,7 +56,9 @@ def surge_front(run_dir):
     floor = 0.0 if not walls else max(
         vec(case[w]["max"])[1] for w in walls
         if vec(case[w]["max"])[0] - vec(case[w]["min"])[0] > 4 * a)
-    times, fronts, n_fluid = [], [], 0
+    boxes = [(np.array(vec(case[w]["min"])) + 0.5 * dx, np.array(vec(case[w]["max"])) - 0.5 * dx)
+             for w in walls]
+    times, fronts, in_walls, n_fluid = [], [], [], 0
     with h5py.File(os.path.join(run_dir, "fluid.h5"), "r") as f:
         for k in sorted(f["frames"].keys()):
             fr = f["frames"][k]
@@ -63,7 +68,11 @@ def surge_front(run_dir):
             near = fluid & (x[:, 1] < floor + 2.0 * dx)
             times.append(float(fr.attrs["time"]))
             fronts.append(float(x[near, 0].max()) if near.any() else float("nan"))
-    return dx, a, g, n_fluid, np.array(times), np.array(fronts)
+            inside = np.zeros(len(x), dtype=bool)
+            for lo, hi in boxes:
+                inside |= np.all((x >= lo) & (x <= hi), axis=1)
+            in_walls.append(int((inside & fluid).sum()))
+    return dx, a, g, n_fluid, np.array(times), np.array(fronts), np.array(in_walls)
 
 
 def main():
@@ -76,30 +85,33 @@ def main():
     T_exp, Z_exp = read_data(args.data)
     results = []
     for run in args.runs:
-        dx, a, g, n, t, z = surge_front(run)
+        dx, a, g, n, t, z, inw = surge_front(run)
         T = t * math.sqrt(2.0 * g / a)
         Z = z / a
         ok = T_exp <= T[-1] + 1e-9
         Zs = np.interp(T_exp[ok], T, Z)
         rel = (Zs - Z_exp[ok]) / Z_exp[ok]
         rms = float(np.sqrt(np.mean(rel ** 2))) if ok.any() else float("nan")
-        results.append((run, dx, a, n, int(ok.sum()), rms, T, Z))
+        results.append((run, dx, a, n, int(ok.sum()), rms, T, Z, inw))
         print(f"{run} dx={dx:.6g} a/dx={a / dx:.1f} particles={n} t_end={t[-1]:.4f} "
-              f"points={int(ok.sum())}/{len(T_exp)} rms={rms:.4f}")
+              f"points={int(ok.sum())}/{len(T_exp)} rms={rms:.4f} "
+              f"in_walls_max={int(inw.max())} in_walls_end={int(inw[-1])}")
         for Te, Ze, Zi in zip(T_exp[ok], Z_exp[ok], Zs):
             print(f"    T={Te:6.3f}  Z_exp/a={Ze:7.3f}  Z_sim/a={Zi:7.3f}  {100 * (Zi - Ze) / Ze:+6.1f} %")
     if args.csv_out:
         with open(args.csv_out, "w", newline="") as f:
             w = csv.writer(f)
-            w.writerow(["run", "dx", "a_over_dx", "particles", "points", "rms"])
-            for run, dx, a, n, npts, rms, _, _ in results:
-                w.writerow([run, f"{dx:.6g}", f"{a / dx:.1f}", n, npts, f"{rms:.6f}"])
+            w.writerow(["run", "dx", "a_over_dx", "particles", "points", "rms",
+                        "in_walls_max", "in_walls_end"])
+            for run, dx, a, n, npts, rms, _, _, inw in results:
+                w.writerow([run, f"{dx:.6g}", f"{a / dx:.1f}", n, npts, f"{rms:.6f}",
+                            int(inw.max()), int(inw[-1])])
     if args.png:
         import matplotlib
         matplotlib.use("Agg")
         import matplotlib.pyplot as plt
         fig, ax = plt.subplots(figsize=(6.4, 4.8))
-        for run, dx, a, n, npts, rms, T, Z in results:
+        for run, dx, a, n, npts, rms, T, Z, _ in results:
             ax.plot(T, Z, label=f"ULPH a/dx = {a / dx:.0f} ({n} particles), RMS {100 * rms:.1f} %")
         ax.plot(T_exp, Z_exp, "ko", label="Martin & Moyce 1952, n$^2$ = 2, a = 2.25 in")
         ax.set_xlabel("T = t sqrt(2 g / a)")

@@ -73,9 +73,9 @@ done
 
 REPORT="$OUT/f1_dam_break.md"
 {
-  echo "| dx | a / dx | fluid particles | points | RMS (Z_sim - Z_exp) / Z_exp | end | wall time | threads | particle-steps/s |"
-  echo "| --- | --- | --- | --- | --- | --- | --- | --- | --- |"
-  tail -n +2 "$OUT/f1_dam_break.csv" | while IFS=, read -r run dx ratio n pts rms; do
+  echo "| dx | a / dx | fluid particles | points | RMS (Z_sim - Z_exp) / Z_exp | end | fluid in walls (most, end) | wall time | threads | particle-steps/s |"
+  echo "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |"
+  tail -n +2 "$OUT/f1_dam_break.csv" | while IFS=, read -r run dx ratio n pts rms inmax inend; do
     txt="$run.txt"
     wt=$(sed -n 's/^fsi run: finished in \([0-9.]*\) s.*/\1/p' "$txt" | tail -1)
     [ -n "$wt" ] || wt=$(awk '/^wall_time_s/ {print $2}' "$txt" | tail -1)
@@ -84,7 +84,7 @@ REPORT="$OUT/f1_dam_break.md"
     pss=$(grep -o '([0-9.e+]* particle-steps/s)' "$run/fluid.log" | tail -1 | tr -d '()' | awk '{print $1}')
     tend=$(grep "^$run " "$OUT/f1_dam_break.txt" | grep -o "t_end=[0-9.]*" | cut -d= -f2)
     if grep -q "^fsi run: finished" "$txt"; then endst="t = $tend s"; else endst="unstable, last frame t = $tend s"; fi
-    echo "| $dx m | $ratio | $n | $pts / 15 | $(calc "'%.1f %%' % (100 * $rms)") | $endst | ${wt} s | ${thr:-?} | ${pss:-?} |"
+    echo "| $dx m | $ratio | $n | $pts / 15 | $(calc "'%.1f %%' % (100 * $rms)") | $endst | $inmax, $inend | ${wt} s | ${thr:-?} | ${pss:-?} |"
   done
 } > "$REPORT"
 cat "$REPORT"
