@@ -22,6 +22,15 @@ void fsi_grid_init(fsi_neighbour_grid *g)
     g->cell_of = NULL;
     g->point_capacity = 0;
     g->cell_capacity = 0;
+    g->periodic = (fsi_periodic){{0}, {0}, {0}};
+}
+
+void fsi_grid_set_periodic(fsi_neighbour_grid *g, const fsi_periodic *per)
+{
+    if (per)
+        g->periodic = *per;
+    else
+        g->periodic = (fsi_periodic){{0}, {0}, {0}};
 }
 
 void fsi_grid_free(fsi_neighbour_grid *g)
@@ -61,7 +70,15 @@ static int reserve(fsi_neighbour_grid *g, int n, long n_cells)
     return 0;
 }
 
-/* Chooses origin, cell size and dims for the bounding box of the points. */
+/* Position i's coordinate d, wrapped into the period along a periodic axis. */
+static double coordinate(const fsi_neighbour_grid *g, const double *x, long i, int d)
+{
+    const double v = x[i * FSI_DIM + d];
+    return g->periodic.on[d] ? fsi_periodic_wrap_axis(&g->periodic, d, v) : v;
+}
+
+/* Chooses origin, cell size and dims for the bounding box of the points (along a
+ * periodic axis: the period). */
 static int layout(fsi_neighbour_grid *g, const double *x, int n, double cell_size)
 {
     double lo[FSI_DIM], hi[FSI_DIM];
@@ -76,6 +93,14 @@ static int layout(fsi_neighbour_grid *g, const double *x, int n, double cell_siz
                 lo[d] = v;
             if (v > hi[d])
                 hi[d] = v;
+        }
+    for (int d = 0; d < FSI_DIM; d++)
+        if (g->periodic.on[d]) {
+            if (!(g->periodic.length[d] >= 3.0 * cell_size))
+                return -1;
+            lo[d] = g->periodic.lo[d];
+            /* Cells of size cs from lo; the last one takes the remainder below cs. */
+            hi[d] = g->periodic.lo[d] + g->periodic.length[d] - cell_size;
         }
     const double max_cells = (double)CELLS_PER_POINT * n + EXTRA_CELLS;
     double cs = cell_size;
@@ -93,6 +118,12 @@ static int layout(fsi_neighbour_grid *g, const double *x, int n, double cell_siz
     for (int d = 0; d < FSI_DIM; d++) {
         g->origin[d] = lo[d];
         g->dims[d] = (int)floor((hi[d] - lo[d]) / cs) + 1;
+        if (g->periodic.on[d]) {
+            /* Whole cells in the period, the last one stretched to its end. */
+            g->dims[d] = (int)floor(g->periodic.length[d] / cs);
+            if (g->dims[d] < 3)
+                return -1;
+        }
         g->n_cells *= g->dims[d];
     }
     return 0;
@@ -118,7 +149,7 @@ int fsi_grid_build(fsi_neighbour_grid *g, const double *x, int n, double cell_si
     for (int i = 0; i < n; i++) {
         long c = 0;
         for (int d = FSI_DIM - 1; d >= 0; d--) {
-            int k = (int)((x[(long)i * FSI_DIM + d] - g->origin[d]) * inv);
+            int k = (int)((coordinate(g, x, i, d) - g->origin[d]) * inv);
             if (k >= g->dims[d])
                 k = g->dims[d] - 1;
             c = c * g->dims[d] + k;
@@ -132,7 +163,7 @@ int fsi_grid_build(fsi_neighbour_grid *g, const double *x, int n, double cell_si
         const int k = start[cell_of[i]]++;
         g->sorted[k] = i;
         for (int d = 0; d < FSI_DIM; d++)
-            g->sorted_x[(long)k * FSI_DIM + d] = x[(long)i * FSI_DIM + d];
+            g->sorted_x[(long)k * FSI_DIM + d] = coordinate(g, x, i, d);
     }
     for (long c = n_cells; c > 0; c--)
         start[c] = start[c - 1];
