@@ -41,6 +41,8 @@ static void read_probe(fluid_probe_point *q, const fluid_geometry *g, const fsi_
     const char *quantity = fsi_case_get(c, section, "quantity");
     q->elevation = quantity && strcmp(quantity, "elevation") == 0;
     q->follow = fsi_case_get(c, section, "follow");
+    if (q->follow && !q->follow[0])
+        q->follow = NULL;       /* the default "": a fixed point */
     q->follow_box = -1;
     for (int b = 0; q->follow && b < g->n_boxes; b++) {
         const char *name = fsi_case_object_name(g->boxes[b].section);

@@ -118,7 +118,7 @@ static const fsi_key_spec probe_keys[] = {
      "the fluid particles within one spacing horizontally of the point plus half a "
      "spacing (the surface lies half a spacing above the top particle's centre), minus "
      "the point's (put the point on the still surface to get the elevation)."},
-    {"follow", FSI_KEY_STRING, "-", NULL, 0, 0, 0, NULL,
+    {"follow", FSI_KEY_STRING, "-", "", 0, 0, 0, NULL,
      "Name of a [fluid.wall] whose prescribed motion the point follows (a probe fixed to "
      "a moving tank); without it the point is fixed."},
 };
