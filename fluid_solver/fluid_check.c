@@ -71,6 +71,24 @@ static void check_probes(fsi_case_checker *k, const fluid_geometry *g)
     }
 }
 
+/* A harmonic motion needs a direction; a probe can follow only a wall of the case. */
+static void check_motion(fsi_case_checker *k, const fluid_geometry *g)
+{
+    for (int b = 0; b < g->n_boxes; b++) {
+        const fluid_box *box = &g->boxes[b];
+        double norm = 0.0;
+        for (int d = 0; d < FSI_DIM; d++)
+            norm += box->motion.direction[d] * box->motion.direction[d];
+        if (box->motion.kind != FLUID_MOTION_NONE && !(norm > 0.0))
+            fsi_case_problem(k, box->section, "motion_direction",
+                             "is zero: a harmonic motion needs a direction");
+    }
+    for (int q = 0; q < g->n_probes; q++)
+        if (g->probes[q].follow && g->probes[q].follow_box < 0)
+            fsi_case_problem(k, g->probes[q].section, "follow",
+                             "names no [fluid.wall %s] of this case", g->probes[q].follow);
+}
+
 static void check_sound_speed(fsi_case_checker *k, const char *role)
 {
     if (fsi_case_get_real(k->c, role, "sound_speed", 0.0) > 0.0)
@@ -100,6 +118,7 @@ int fluid_geometry_check(const fsi_case *c, const char *role, FILE *errors)
                          "use a larger spacing",
                          fluid_geometry_lattice_size(&g), (double)FLUID_MAX_LATTICE);
     check_probes(&k, &g);
+    check_motion(&k, &g);
     check_sound_speed(&k, role);
     fluid_geometry_free(&g);
     return k.errors;

@@ -24,10 +24,31 @@ static void read_box(fluid_box *b, const fsi_case *c, const char *section, doubl
     b->section = section;
     b->is_wall = is_wall;
     b->free_slip = is_wall && fsi_case_get_bool(c, section, "free_slip", 0);
+    if (is_wall)
+        fluid_motion_read(&b->motion, c, section);
     read_vector(c, section, "min", b->min);
     read_vector(c, section, "max", b->max);
     for (int d = 0; d < FSI_DIM; d++)
         b->count[d] = fsi_lattice_count(b->min[d], b->max[d], spacing);
+}
+
+/* After the boxes: 'follow' names one of the walls. */
+static void read_probe(fluid_probe_point *q, const fluid_geometry *g, const fsi_case *c,
+                       const char *section)
+{
+    q->section = section;
+    read_vector(c, section, "point", q->point);
+    const char *quantity = fsi_case_get(c, section, "quantity");
+    q->elevation = quantity && strcmp(quantity, "elevation") == 0;
+    q->follow = fsi_case_get(c, section, "follow");
+    if (q->follow && !q->follow[0])
+        q->follow = NULL;       /* the default "": a fixed point */
+    q->follow_box = -1;
+    for (int b = 0; q->follow && b < g->n_boxes; b++) {
+        const char *name = fsi_case_object_name(g->boxes[b].section);
+        if (g->boxes[b].is_wall && name && strcmp(name, q->follow) == 0)
+            q->follow_box = b;
+    }
 }
 
 int fluid_geometry_read(fluid_geometry *g, const fsi_case *c, const char *role, char *msg,
@@ -54,10 +75,8 @@ int fluid_geometry_read(fluid_geometry *g, const fsi_case *c, const char *role, 
         for (int i = 0; i < nw; i++)
             read_box(&g->boxes[nb + i], c, walls[i], g->spacing, 1);
         g->n_boxes = nb + nw;
-        for (int i = 0; i < np; i++) {
-            g->probes[i].section = probes[i];
-            read_vector(c, probes[i], "point", g->probes[i].point);
-        }
+        for (int i = 0; i < np; i++)
+            read_probe(&g->probes[i], g, c, probes[i]);
         g->n_probes = np;
     }
     free(blocks);

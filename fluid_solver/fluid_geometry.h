@@ -11,6 +11,7 @@
 
 #include "case_file.h"
 #include "dim.h"
+#include "fluid_motion.h"
 #include "fluid_particles.h"
 
 /* Relative tolerance (in spacings) of "a whole number of spacings" and of boxes. */
@@ -24,11 +25,15 @@ typedef struct {
     double min[FSI_DIM], max[FSI_DIM];
     long count[FSI_DIM];        /* lattice points along each axis */
     int is_wall, free_slip;
+    fluid_motion motion;        /* a wall's prescribed motion (kind NONE: fixed) */
 } fluid_box;
 
 typedef struct {
     const char *section;        /* "fluid.probe NAME" */
     double point[FSI_DIM];
+    int elevation;              /* quantity = elevation (else pressure) */
+    const char *follow;         /* the wall NAME the point moves with, or NULL */
+    int follow_box;             /* its index in boxes, -1 (none, or no such wall) */
 } fluid_probe_point;
 
 typedef struct {

@@ -6,8 +6,10 @@
 
 #if FSI_DIM == 2
 #define ZERO_VECTOR "0, 0"
+#define UNIT_X "1, 0"
 #else
 #define ZERO_VECTOR "0, 0, 0"
+#define UNIT_X "1, 0, 0"
 #endif
 
 static const fsi_key_spec common_keys[] = {
@@ -83,11 +85,25 @@ static const fsi_key_spec wall_keys[] = {
      "false: no-slip, the wall's particles carry the virtual velocity 2 v_wall - v~ of "
      "000 Eqs. 50-51 into the viscous stress; true: free-slip, they carry v~ (no viscous "
      "shear from the wall)."},
+    {"motion", FSI_KEY_CHOICE, "-", "none", 0, 0, 0, "none|harmonic",
+     "none: the wall is fixed; harmonic: it translates rigidly by X(t) = motion_amplitude "
+     "(sin(2 pi t / motion_period + motion_phase) - sin(motion_phase)) along "
+     "motion_direction, counted from where it is drawn, and its pressure uses its "
+     "acceleration X'' (000 Eq. 52); give several walls the same motion to move a tank."},
+    {"motion_amplitude", FSI_KEY_REAL, "m", "0", 0, 0, 0, NULL,
+     "Amplitude A of the harmonic motion (000 Eq. 60's A0)."},
+    {"motion_period", FSI_KEY_REAL, "s", "1", FSI_BOUND_MIN_OPEN, 0, 0, NULL,
+     "Period T of the harmonic motion."},
+    {"motion_phase", FSI_KEY_REAL, "deg", "0", 0, 0, 0, NULL,
+     "Phase of the harmonic motion in degrees; 90 gives the velocity -(2 pi A / T) "
+     "sin(2 pi t / T) of the sloshing tank (000 Eq. 60), starting at rest."},
+    {"motion_direction", FSI_KEY_VECTOR, "-", UNIT_X, 0, 0, 0, NULL,
+     "Direction of the harmonic motion (normalised; must not be zero)."},
 };
 
 const fsi_key_table fsi_fluid_wall_keys = {
     "fluid.wall",
-    "A box of fixed wall particles whose pressure and density are extrapolated from the "
+    "A box of wall particles, fixed or moving with a prescribed motion, whose pressure and density are extrapolated from the "
     "fluid (000 Eqs. 50-54).",
     wall_keys, (int)(sizeof wall_keys / sizeof wall_keys[0])};
 
@@ -96,14 +112,25 @@ static const fsi_key_spec probe_keys[] = {
      "Where the pressure is measured: the nearest fluid particle's pressure carried to "
      "the point with its pressure gradient (000 Eq. 13), column NAME_p of probes.csv; the "
      "point must lie in (or on the edge of) a block."},
+    {"quantity", FSI_KEY_CHOICE, "-", "pressure", 0, 0, 0, "pressure|elevation",
+     "pressure: column NAME_p as described at point; elevation: column NAME_eta, the "
+     "height of the free surface above the point, i.e. the largest vertical coordinate of "
+     "the fluid particles within one spacing horizontally of the point plus half a "
+     "spacing (the surface lies half a spacing above the top particle's centre), minus "
+     "the point's (put the point on the still surface to get the elevation)."},
+    {"follow", FSI_KEY_STRING, "-", "", 0, 0, 0, NULL,
+     "Name of a [fluid.wall] whose prescribed motion the point follows (a probe fixed to "
+     "a moving tank); without it the point is fixed."},
 };
 
 const fsi_key_table fsi_fluid_probe_keys = {
-    "fluid.probe", "The fluid pressure at a fixed point, recorded in probes.csv.", probe_keys,
+    "fluid.probe",
+    "The fluid pressure or the free-surface elevation at a point, recorded in probes.csv.", probe_keys,
     (int)(sizeof probe_keys / sizeof probe_keys[0])};
 
 const fsi_object_kind fsi_fluid_object_kinds[FSI_FLUID_N_OBJECT_KINDS] = {
     {"block", "Boxes of fluid at the start.", &fsi_fluid_block_keys, 1},
     {"wall", "Boxes of fixed wall particles (a tank is several).", &fsi_fluid_wall_keys, 0},
-    {"probe", "Points where the pressure goes to probes.csv.", &fsi_fluid_probe_keys, 0},
+    {"probe", "Points where the pressure or the surface elevation goes to probes.csv.",
+     &fsi_fluid_probe_keys, 0},
 };

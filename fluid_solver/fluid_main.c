@@ -24,6 +24,7 @@
 #include "fluid_geometry.h"
 #include "fluid_probes.h"
 #include "fluid_scheme.h"
+#include "fluid_wall_motion.h"
 #include "h5_output.h"
 #include "log.h"
 #include "participant.h"
@@ -49,6 +50,9 @@ typedef struct {
     fluid_properties props;
     fluid_scheme *scheme;
     fluid_probes probes;
+    fluid_wall_motion motion;
+    double t;           /* time of the current state (walls are put there) */
+    double wall_work;   /* work of the moving walls on the fluid so far [J] */
     int n_fluid;
     double *x0, *v0, *rho0, *drho, *accel, *grad_p;
     double energy_limit, kinetic0, compression0, potential0, energy_floor;
@@ -77,6 +81,7 @@ static void free_run(fluid_run *s)
         fsi_h5_close(s->out);
     fluid_scheme_free(s->scheme);
     fluid_probes_free(&s->probes);
+    fluid_wall_motion_free(&s->motion);
     fluid_particles_free(&s->p);
     fluid_geometry_free(&s->geometry);
     free(s->free_slip);
@@ -195,6 +200,7 @@ static int write_static(fluid_run *s)
 /* Rates at the current state into drho, accel. */
 static int evaluate(fluid_run *s)
 {
+    fluid_wall_motion_apply(&s->motion, s->t, &s->p);
     fsi_timer_start(&s->timers, s->t_rates);
     int rc = fluid_scheme_rates(s->scheme, &s->p, s->drho, s->accel, s->msg, sizeof s->msg);
     fsi_timer_stop(&s->timers, s->t_rates);
@@ -223,6 +229,9 @@ static int setup(fluid_run *s, fsi_participant *part)
     if (fluid_geometry_build(&s->geometry, pr->density, &s->p, &s->free_slip, s->msg, ms) != 0)
         return -1;
     pr->free_slip = s->free_slip;
+    if (fluid_wall_motion_init(&s->motion, &s->geometry, &s->p, s->msg, ms) != 0)
+        return -1;
+    pr->wall_acceleration = s->motion.acceleration;
     fluid_particles *p = &s->p;
     for (int i = 0; i < p->n; i++)
         s->n_fluid += (p->flags[i] & FLUID_PARTICLE_FLUID) != 0;
@@ -247,6 +256,7 @@ static int setup(fluid_run *s, fsi_participant *part)
     if (fluid_probes_init(&s->probes, &s->geometry, part, s->msg, ms) != 0)
         return -1;
     fsi_escape_box(p->x, p->n, ESCAPE_DIAGONALS, p->spacing, s->box_min, s->box_max);
+    fluid_wall_motion_widen(&s->motion, s->box_min, s->box_max);
     if (evaluate(s) != 0)
         return -1;
 
@@ -335,8 +345,14 @@ static int step(fluid_run *s, double dt)
         }
     }
     fsi_timer_stop(&s->timers, s->t_integrate);
+    const double t_start = s->t;
+    s->t = t_start + 0.5 * dt;     /* moving walls at the mid-step time */
     if (evaluate(s) != 0)
         return -1;
+    /* Midpoint rule for the work of moving walls (the energy check's budget). */
+    s->wall_work += dt * fluid_wall_motion_power(&s->motion, s->t, p, s->accel,
+                                                 s->props.gravity);
+    s->t = t_start + dt;
     fsi_timer_start(&s->timers, s->t_integrate);
     for (int i = 0; i < n; i++) {
         if (!(p->flags[i] & FLUID_PARTICLE_FLUID))
@@ -357,6 +373,7 @@ static int step(fluid_run *s, double dt)
 /* The window [t0, t0 + dt] in equal steps no longer than the stable step at its start. */
 static int advance(fluid_run *s, double t0, double dt, int window)
 {
+    s->t = t0;
     if (evaluate(s) != 0)
         return -1;
     if (dt <= 0.0)
@@ -386,7 +403,7 @@ static int advance(fluid_run *s, double t0, double dt, int window)
 static int check_health(fluid_run *s, double t, int window)
 {
     const fluid_particles *p = &s->p;
-    /* Wall particles never move: only fluid particles can leave. */
+    /* The box includes the reach of moving walls: only fluid particles can leave. */
     const int i = fsi_outside_box(p->x, p->n, s->box_min, s->box_max);
     if (i >= 0) {
         char at[128];
@@ -401,16 +418,20 @@ static int check_health(fluid_run *s, double t, int window)
      * an unstable integration makes energy from nothing. */
     double kinetic = kinetic_energy(p), released = s->potential0 -
                                                    potential_energy(p, s->props.gravity);
-    double budget = fmax(s->kinetic0 + s->compression0 + released, 0.0);
+    /* Moving walls add their work; unknown (NAN: walls with different motions) lifts
+     * the bound. */
+    double budget = isnan(s->wall_work)
+                        ? INFINITY
+                        : fmax(s->kinetic0 + s->compression0 + released + s->wall_work, 0.0);
     if (!isfinite(kinetic) || kinetic > s->energy_limit * budget + s->energy_floor) {
-        /* Wall particles are at rest: the fastest particle is a fluid one. */
+        /* Walls move slower than an unstable fluid: the fastest particle is a fluid one. */
         double speed;
         const int fastest = fsi_fastest(p->v, p->n, &speed);
         char at[128];
         snprintf(s->msg, sizeof s->msg,
                  "kinetic energy grew to %.6g J, more than "
                  "energy_growth_limit = %g times the initial kinetic and compression energy "
-                 "plus the potential energy released (%.6g J) plus the floor %.3g J; fastest: "
+                 "plus the potential energy released and the moving walls' work (%.6g J) plus the floor %.3g J; fastest: "
                  "particle %d at %s "
                  "at %.3g m/s; at t = %.9g s (window %d): the integration is unstable",
                  kinetic, s->energy_limit, budget, s->energy_floor, p->id[fastest],
@@ -498,7 +519,7 @@ int main(void)
                 break;
             }
             fluid_scheme_pressure_gradient(s.scheme, &s.p, s.grad_p);
-            fluid_probes_set(&s.probes, &s.p, s.grad_p, part);
+            fluid_probes_set(&s.probes, &s.p, s.grad_p, t0 + dt, part);
         }
         if (frame >= 0) {
             fsi_timer_start(&s.timers, s.t_output);

@@ -7,8 +7,10 @@
  * Contract per evaluation of the rates at the particles' current state:
  *   - fluid particles: the scheme sets pressure (equation of state) and volume
  *     (m / rho) from density, and returns drho/dt and dv/dt;
- *   - wall particles: the scheme sets their pressure, density and mass (the fixed ghost
- *     boundary of 000 §2.3); their rates are zero (they do not move).
+ *   - wall particles: the scheme sets their pressure, density and mass (the ghost
+ *     boundary of 000 §2.3); their rates are zero: the main loop puts them where their
+ *     prescribed motion says, with its velocity (v_S) and acceleration
+ *     (props->wall_acceleration, a_S), before each evaluation.
  * Rates of any other particle are zero. The number of particles may change between
  * calls (the moving boundary set at the tail, fluid_boundary.h): a scheme sizes its
  * per-particle scratch to p->n at every call. */
@@ -31,6 +33,10 @@ typedef struct {
     double tait_exponent;       /* gamma (000 Eq. 6) */
     double gravity[FSI_DIM];    /* [m/s^2] */
     const unsigned char *free_slip; /* per particle: 1 for a free-slip wall particle */
+    /* per particle (n * FSI_DIM), the prescribed acceleration of a moving wall particle
+     * at the time of the current rates (000 Eq. 52's a_S), kept up to date by the main
+     * loop; NULL when no wall moves */
+    const double *wall_acceleration;
 } fluid_properties;
 
 /* Reads the scheme's keys from [role] and allocates its state for p. NULL with msg. */

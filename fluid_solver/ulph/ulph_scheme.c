@@ -30,6 +30,7 @@ struct fluid_scheme {
     ulph_operators ops;
     ulph_momentum_scratch scratch;
     const unsigned char *free_slip;
+    const double *wall_acceleration;
     double *velocity_for_viscosity, *filtered, *density_gradient;
     double cfl_acoustic, cfl_viscous, cfl_force;
     long filter_interval;
@@ -85,6 +86,7 @@ fluid_scheme *fluid_scheme_create(const fsi_case *c, const char *role,
     s->momentum.rho0 = props->density;
     memcpy(s->momentum.gravity, props->gravity, sizeof s->momentum.gravity);
     s->free_slip = props->free_slip;
+    s->wall_acceleration = props->wall_acceleration;
     s->cfl_acoustic = fsi_case_get_real(c, role, "cfl_acoustic", 0.25);
     s->cfl_viscous = fsi_case_get_real(c, role, "cfl_viscous", 0.125);
     s->cfl_force = fsi_case_get_real(c, role, "cfl_force", 0.25);
@@ -199,13 +201,13 @@ int fluid_scheme_rates(fluid_scheme *s, fluid_particles *p, double *drho_dt, dou
                  "position is not finite, or memory ran out)", p->n);
         return -1;
     }
-    ulph_walls_update(&s->ops, &s->eos, s->momentum.gravity, s->free_slip, p,
-                      s->velocity_for_viscosity);
+    ulph_walls_update(&s->ops, &s->eos, s->momentum.gravity, s->wall_acceleration,
+                      s->free_slip, p, s->velocity_for_viscosity);
     if (s->filter_due) {
         density_filter(s, p);
         fluid_state(s, p);
-        ulph_walls_update(&s->ops, &s->eos, s->momentum.gravity, s->free_slip, p,
-                          s->velocity_for_viscosity);
+        ulph_walls_update(&s->ops, &s->eos, s->momentum.gravity, s->wall_acceleration,
+                          s->free_slip, p, s->velocity_for_viscosity);
         s->filter_due = 0;
     }
     ulph_momentum_rates(&s->ops, &s->momentum, p, s->velocity_for_viscosity, &s->scratch,

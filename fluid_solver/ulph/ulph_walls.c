@@ -5,8 +5,8 @@
 #include <string.h>
 
 void ulph_walls_update(const ulph_operators *ops, const ulph_eos *eos, const double *gravity,
-                       const unsigned char *free_slip, fluid_particles *p,
-                       double *velocity_for_viscosity)
+                       const double *wall_acceleration, const unsigned char *free_slip,
+                       fluid_particles *p, double *velocity_for_viscosity)
 {
     const int n = p->n;
 #pragma omp parallel for schedule(static) if (n >= ULPH_PARALLEL_MIN_PARTICLES)
@@ -33,10 +33,11 @@ void ulph_walls_update(const ulph_operators *ops, const ulph_eos *eos, const dou
         }
         double pressure = 0.0;
         if (sum_w > 0.0) {
-            /* The wall is fixed: a_S = 0 in (g - a_S) of 000 Eq. 52. */
+            /* (g - a_S) of 000 Eq. 52; a_S = 0 for a fixed wall. */
             pressure = sum_pw;
             for (int d = 0; d < FSI_DIM; d++) {
-                pressure += gravity[d] * head[d];
+                const double a_s = wall_acceleration ? wall_acceleration[s * FSI_DIM + d] : 0.0;
+                pressure += (gravity[d] - a_s) * head[d];
                 v_mean[d] /= sum_w;
             }
             pressure /= sum_w;

@@ -11,7 +11,11 @@
 /* For every wall particle S with fluid neighbours f (weights w_Sf of the last
  * ulph_operators_update):
  *   p_S = max(0, (sum_f p_f w_Sf + (g - a_S) . sum_f rho_f (x_S - x_f) w_Sf) / sum_f w_Sf)
- *                                                          (000 Eq. 52, a_S = 0: fixed)
+ *                                                          (000 Eq. 52)
+ * with a_S = wall_acceleration[S * FSI_DIM + d], the prescribed acceleration of a moving
+ * wall (fluid_wall_motion.h), or 0 for every wall when wall_acceleration is NULL. In the
+ * wall's frame the fluid feels g - a_S, so this continues the hydrostatic field of an
+ * accelerating tank exactly (tests/unit/test_ulph_scheme.c).
  *   rho_S from the equation of state (000 Eq. 53, ulph_eos.h), m_S = rho_S V0 (Eq. 54)
  *   v~_S = sum_f v_f w_Sf / sum_f w_Sf                     (000 Eq. 51)
  *   velocity_for_viscosity_S = 2 v_S - v~_S                (no-slip, 000 Eq. 50)
@@ -26,7 +30,7 @@
  * rho = rho0 and v~ = 0. For fluid particles velocity_for_viscosity is their
  * velocity. */
 void ulph_walls_update(const ulph_operators *ops, const ulph_eos *eos, const double *gravity,
-                       const unsigned char *free_slip, fluid_particles *p,
-                       double *velocity_for_viscosity);
+                       const double *wall_acceleration, const unsigned char *free_slip,
+                       fluid_particles *p, double *velocity_for_viscosity);
 
 #endif

@@ -23,6 +23,13 @@ expect_refused "[fluid.probe bottom_left] point: lies in no [fluid.block]" \
   --set "fluid.probe bottom_left.point=2,0"
 expect_refused "[fluid] sound_speed: is 0" --set fluid.max_velocity=0 --set fluid.max_pressure=0
 expect_refused "[fluid] artificial_viscosity" --set fluid.artificial_viscosity=0.9
+expect_refused "[fluid.wall left] motion_direction: is zero" \
+  --set "fluid.wall left.motion=harmonic" --set "fluid.wall left.motion_direction=0,0"
+expect_refused "[fluid.wall left] motion: " --set "fluid.wall left.motion=wobble"
+expect_refused "[fluid.wall left] motion_period: " --set "fluid.wall left.motion_period=0"
+expect_refused "[fluid.probe bottom_left] follow: names no [fluid.wall lid]" \
+  --set "fluid.probe bottom_left.follow=lid"
+expect_refused "[fluid.probe bottom_left] quantity: " --set "fluid.probe bottom_left.quantity=speed"
 
 # Four times the acoustic step without damping: the energy check stops the run.
 set +e

@@ -1,5 +1,7 @@
 /* The rates of the ULPH fluid (fluid_solver/ulph: ulph_eos.h, ulph_walls, ulph_momentum):
  *  - the Tait equation of state (000 Eq. 6) and its inverse (Eq. 53) agree;
+ *  - wall particles of a tank accelerating at a get rho0 (g - a) . (x_S - x_surface),
+ *    the continued field of the fluid at rest in the tank (000 Eq. 52 with a_S = a);
  *  - wall particles under a column of water at the hydrostatic pressure get exactly
  *    the continued linear pressure (000 Eq. 52: exact for a linear field);
  *  - the hydrostatic column is in equilibrium: every fluid particle whose support is
@@ -119,7 +121,7 @@ static void test_hydrostatic(void)
     scene_update(&s);
     const ulph_eos e = {rho0, 31.3, 7.0};
     const double gravity[2] = {0.0, -g};
-    ulph_walls_update(&s.ops, &e, gravity, NULL, p, s.vv);
+    ulph_walls_update(&s.ops, &e, gravity, NULL, NULL, p, s.vv);
     double worst_wall = 0.0;
     for (int i = 0; i < p->n; i++)
         if ((p->flags[i] & FLUID_PARTICLE_WALL) && p->pressure[i] != 0.0)
@@ -169,7 +171,7 @@ static void test_hydrostatic(void)
     for (int slip = 0; slip < 2; slip++) {
         for (int i = 0; i < p->n; i++)
             free_slip[i] = (unsigned char)slip;
-        ulph_walls_update(&s.ops, &e, gravity, free_slip, p, s.vv);
+        ulph_walls_update(&s.ops, &e, gravity, NULL, free_slip, p, s.vv);
         double worst_v = 0.0;
         int walls_seen = 0;
         for (int i = 0; i < p->n; i++) {
@@ -193,6 +195,41 @@ static void test_hydrostatic(void)
               slip ? "free-slip" : "no-slip", worst_v);
     }
     free(free_slip);
+
+    /* The tank accelerates at a (000 Eq. 52's a_S on every wall particle): in its frame
+     * the fluid is at rest under g - a, p = rho0 (g - a) . (x - x_r) with x_r on the
+     * surface where it meets the middle of the tank, a linear field, so every wall
+     * particle must get it continued exactly (or 0 where the continuation is negative:
+     * walls never pull). */
+    const double a[2] = {2.5, -1.5}, x_r[2] = {0.5 * nx * dx, H};
+    double *wall_acc = calloc((size_t)p->n * 2, sizeof *wall_acc);
+    for (int i = 0; i < p->n; i++) {
+        for (int d = 0; d < 2; d++) {
+            p->v[i * 2 + d] = 0.0;
+            if (p->flags[i] & FLUID_PARTICLE_WALL)
+                wall_acc[i * 2 + d] = a[d];
+        }
+        if (p->flags[i] & FLUID_PARTICLE_FLUID)
+            p->pressure[i] = rho0 * ((gravity[0] - a[0]) * (p->x[i * 2] - x_r[0]) +
+                                     (gravity[1] - a[1]) * (p->x[i * 2 + 1] - x_r[1]));
+    }
+    ulph_walls_update(&s.ops, &e, gravity, wall_acc, NULL, p, s.vv);
+    double worst_acc = 0.0;
+    int loaded = 0;
+    for (int i = 0; i < p->n; i++) {
+        if (!(p->flags[i] & FLUID_PARTICLE_WALL) || p->pressure[i] == 0.0)
+            continue;
+        const double expected = rho0 * ((gravity[0] - a[0]) * (p->x[i * 2] - x_r[0]) +
+                                        (gravity[1] - a[1]) * (p->x[i * 2 + 1] - x_r[1]));
+        worst_acc = fmax(worst_acc, fabs(p->pressure[i] - fmax(expected, 0.0)));
+        loaded++;
+    }
+    printf("accelerating tank: largest wall pressure error %.3g Pa over %d wall particles\n",
+           worst_acc, loaded);
+    CHECK(loaded > 0 && worst_acc < 1e-9 * rho0 * g * H,
+          "accelerating tank: wall pressure not rho0 (g - a) . (x_S - x_r): off by %g Pa",
+          worst_acc);
+    free(wall_acc);
     scene_free(&s);
 }
 #endif
