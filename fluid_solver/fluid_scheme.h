@@ -20,6 +20,7 @@
 #include "case_file.h"
 #include "fluid_particles.h"
 #include "h5_output.h"
+#include "periodic.h"
 
 typedef struct fluid_scheme fluid_scheme;
 
@@ -31,6 +32,7 @@ typedef struct {
     double tait_exponent;       /* gamma (000 Eq. 6) */
     double gravity[FSI_DIM];    /* [m/s^2] */
     const unsigned char *free_slip; /* per particle: 1 for a free-slip wall particle */
+    fsi_periodic periodic;      /* periodic axes (fluid_periodic.h); none by default */
 } fluid_properties;
 
 /* Reads the scheme's keys from [role] and allocates its state for p. NULL with msg. */
