@@ -138,6 +138,14 @@ static inline double fsi_mat_norm(const double *a)
     return sqrt(s);
 }
 
+static inline double fsi_mat_trace(const double *a)
+{
+    double t = 0.0;
+    for (int d = 0; d < FSI_DIM; d++)
+        t += FSI_MAT(a, d, d);
+    return t;
+}
+
 static inline double fsi_mat_det(const double *a)
 {
 #if FSI_DIM == 2

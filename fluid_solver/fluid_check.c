@@ -9,6 +9,7 @@
 #include "case_check.h"
 #include "fluid_geometry.h"
 #include "fluid_keys.h"
+#include "fluid_periodic.h"
 
 static const char axis_name[3] = {'x', 'y', 'z'};
 
@@ -100,6 +101,47 @@ static void check_sound_speed(fsi_case_checker *k, const char *role)
                 "velocity or pressure");
 }
 
+/* The period box: given, longer than three supports (the neighbour grid needs three
+ * cells per period), a whole number of spacings (the lattice continues across the
+ * boundary), and every box inside it along the periodic axes. */
+static void check_periodic(fsi_case_checker *k, const fluid_geometry *g, const char *role)
+{
+    fsi_periodic per;
+    char msg[256];
+    const char *axes = fsi_case_get(k->c, role, "periodic");
+    if (!axes || strcmp(axes, "none") == 0)
+        return;
+    if (fluid_periodic_read(k->c, role, &per, msg, sizeof msg) != 0) {
+        fprintf(k->out, "%s\n", msg);
+        k->errors++;
+        return;
+    }
+    const double dx = g->spacing;
+    const double support = fsi_case_get_real(k->c, role, "smoothing_factor", 1.2) *
+                           fsi_case_get_real(k->c, role, "support_factor", 3.0) * dx;
+    for (int d = 0; d < FSI_DIM; d++) {
+        if (!per.on[d])
+            continue;
+        const double n = per.length[d] / dx;
+        if (per.length[d] < 3.0 * support)
+            fsi_case_problem(k, role, "periodic_max", "the period along %c is %.6g m, shorter "
+                             "than three kernel supports (%.6g m)", axis_name[d],
+                             per.length[d], 3.0 * support);
+        else if (fabs(n - round(n)) > FLUID_GEOMETRY_TOL * fmax(1.0, n))
+            fsi_case_problem(k, role, "periodic_max", "the period along %c is %.6g spacings; "
+                             "the lattice needs a whole number", axis_name[d], n);
+        for (int b = 0; b < g->n_boxes; b++) {
+            const fluid_box *box = &g->boxes[b];
+            const double tol = FLUID_GEOMETRY_TOL * dx;
+            if (box->min[d] < per.lo[d] - tol || box->max[d] > per.lo[d] + per.length[d] + tol)
+                fsi_case_problem(k, box->section, "min", "reaches outside the period box "
+                                 "along %c (%.9g .. %.9g m): its particles would overlap "
+                                 "their own images", axis_name[d], per.lo[d],
+                                 per.lo[d] + per.length[d]);
+        }
+    }
+}
+
 int fluid_geometry_check(const fsi_case *c, const char *role, FILE *errors)
 {
     fsi_case_checker k = {c, errors, 0};
@@ -120,6 +162,7 @@ int fluid_geometry_check(const fsi_case *c, const char *role, FILE *errors)
     check_probes(&k, &g);
     check_motion(&k, &g);
     check_sound_speed(&k, role);
+    check_periodic(&k, &g, role);
     fluid_geometry_free(&g);
     return k.errors;
 }

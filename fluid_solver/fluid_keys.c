@@ -7,9 +7,11 @@
 #if FSI_DIM == 2
 #define ZERO_VECTOR "0, 0"
 #define UNIT_X "1, 0"
+#define PERIODIC_AXES "none|x|y|xy"
 #else
 #define ZERO_VECTOR "0, 0, 0"
 #define UNIT_X "1, 0, 0"
+#define PERIODIC_AXES "none|x|y|z|xy|xz|yz|xyz"
 #endif
 
 static const fsi_key_spec common_keys[] = {
@@ -50,6 +52,16 @@ static const fsi_key_spec common_keys[] = {
      "0.125)."},
     {"cfl_force", FSI_KEY_REAL, "-", "0.25", FSI_BOUND_MIN_OPEN | FSI_BOUND_MAX, 0, 1, NULL,
      "Force limit of the step: dt <= cfl_force sqrt(h / |a|max) (Monaghan 1992's 0.25)."},
+    {"periodic", FSI_KEY_CHOICE, "-", "none", 0, 0, 0, PERIODIC_AXES,
+     "Axes along which the fluid is periodic: a particle leaving the period box "
+     "periodic_min .. periodic_max re-enters at the other end and pairs interact across "
+     "the boundary through the nearest image; every block and wall must lie inside the "
+     "box along those axes, whose length must be a whole number of spacings."},
+    {"periodic_min", FSI_KEY_VECTOR, "m", ZERO_VECTOR, 0, 0, 0, NULL,
+     "Lower corner of the period box (only the periodic axes' components are used)."},
+    {"periodic_max", FSI_KEY_VECTOR, "m", ZERO_VECTOR, 0, 0, 0, NULL,
+     "Upper corner of the period box; its length along a periodic axis must be at least "
+     "three supports of the kernel."},
     {"energy_growth_limit", FSI_KEY_REAL, "-", "2", FSI_BOUND_MIN_OPEN, 1, 0, NULL,
      "The run stops as unstable when the kinetic energy exceeds this factor times (the "
      "initial kinetic and compression energy + the potential energy released since the "

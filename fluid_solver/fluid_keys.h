@@ -15,7 +15,7 @@
 
 /* [fluid]: spacing, density, viscosity, sound_speed, max_velocity, max_pressure,
  * tait_exponent, gravity, initial_pressure, cfl_acoustic, cfl_viscous, cfl_force,
- * energy_growth_limit. */
+ * periodic, periodic_min, periodic_max, energy_growth_limit. */
 extern const fsi_key_table fsi_fluid_common_keys;
 
 /* [fluid.block NAME], [fluid.wall NAME], [fluid.probe NAME]. */
@@ -28,7 +28,8 @@ extern const fsi_object_kind fsi_fluid_object_kinds[FSI_FLUID_N_OBJECT_KINDS];
 
 /* The check hook of every fluid scheme (fsi_solver_spec.check): boxes with min >= max
  * or not a whole number of spacings, water and walls (or two of either) overlapping,
- * probes outside the water, a sound speed that cannot be derived. One line
+ * probes outside the water, a sound speed that cannot be derived, a period box that is
+ * missing, too short, not a whole number of spacings or cuts a box. One line
  * "FILE:LINE: [section] key: message" per problem on 'errors'; returns how many.
  * Defined in fluid_check.c. */
 int fluid_geometry_check(const fsi_case *c, const char *role, FILE *errors);

@@ -22,6 +22,7 @@
 
 #include "dim.h"
 #include "fluid_geometry.h"
+#include "fluid_periodic.h"
 #include "fluid_probes.h"
 #include "fluid_scheme.h"
 #include "fluid_wall_motion.h"
@@ -56,6 +57,7 @@ typedef struct {
     int n_fluid;
     double *x0, *v0, *rho0, *drho, *accel, *grad_p;
     double energy_limit, kinetic0, compression0, potential0, energy_floor;
+    double potential_wrapped;   /* -sum m g . x that periodic wraps took away */
     double box_min[FSI_DIM], box_max[FSI_DIM];
     fsi_h5_writer *out;
     fsi_timers timers;
@@ -221,6 +223,8 @@ static int setup(fluid_run *s, fsi_participant *part)
     pr->tait_exponent = fsi_case_get_real(c, ROLE, "tait_exponent", 7.0);
     if (fsi_case_get_vector(c, ROLE, "gravity", pr->gravity) != 0)
         memset(pr->gravity, 0, sizeof pr->gravity);
+    if (fluid_periodic_read(c, ROLE, &pr->periodic, s->msg, ms) != 0)
+        return -1;
     if (!(pr->sound_speed > 0.0)) {
         snprintf(s->msg, ms, "[fluid] sound_speed: 0 and no max_velocity or max_pressure to "
                  "derive it from (000 Eq. 7)");
@@ -318,6 +322,22 @@ static int check_finite(fluid_run *s, double t, int window)
     return 0;
 }
 
+/* Fluid particles back into the period box. The potential energy of the energy check
+ * is that of the unwrapped motion (gravity along a periodic axis keeps doing work). */
+static void wrap_periodic(fluid_run *s)
+{
+    fluid_particles *p = &s->p;
+    for (int i = 0; i < p->n; i++) {
+        if (!(p->flags[i] & FLUID_PARTICLE_FLUID))
+            continue;
+        double *x = &p->x[i * FSI_DIM], before[FSI_DIM];
+        memcpy(before, x, sizeof before);
+        fsi_periodic_wrap(&s->props.periodic, x);
+        for (int d = 0; d < FSI_DIM; d++)
+            s->potential_wrapped += p->mass[i] * s->props.gravity[d] * (x[d] - before[d]);
+    }
+}
+
 /* One predictor-corrector step of 000 Eq. 56 for the fluid particles (rates at the
  * start state already in drho, accel):
  *   predictor  rho^{n+1/2} = rho^n + dt/2 drho^n,  v^{n+1/2} = v^n + dt/2 a^n,
@@ -364,6 +384,8 @@ static int step(fluid_run *s, double dt)
             p->x[k] = s->x0[k] + 0.5 * dt * (s->v0[k] + p->v[k]);
         }
     }
+    if (fsi_periodic_any(&s->props.periodic))
+        wrap_periodic(s);
     s->steps++;
     fluid_scheme_after_step(s->scheme, p, s->steps);
     fsi_timer_stop(&s->timers, s->t_integrate);
@@ -417,7 +439,8 @@ static int check_health(fluid_run *s, double t, int window)
      * energy P and the compression energy E_c >= 0, so K(t) <= K0 + E_c0 + (P0 - P(t));
      * an unstable integration makes energy from nothing. */
     double kinetic = kinetic_energy(p), released = s->potential0 -
-                                                   potential_energy(p, s->props.gravity);
+                                                   (potential_energy(p, s->props.gravity) +
+                                                    s->potential_wrapped);
     /* Moving walls add their work; unknown (NAN: walls with different motions) lifts
      * the bound. */
     double budget = isnan(s->wall_work)

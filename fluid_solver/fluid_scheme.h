@@ -22,6 +22,7 @@
 #include "case_file.h"
 #include "fluid_particles.h"
 #include "h5_output.h"
+#include "periodic.h"
 
 typedef struct fluid_scheme fluid_scheme;
 
@@ -37,6 +38,7 @@ typedef struct {
      * at the time of the current rates (000 Eq. 52's a_S), kept up to date by the main
      * loop; NULL when no wall moves */
     const double *wall_acceleration;
+    fsi_periodic periodic;      /* periodic axes (fluid_periodic.h); none by default */
 } fluid_properties;
 
 /* Reads the scheme's keys from [role] and allocates its state for p. NULL with msg. */

@@ -19,6 +19,11 @@ static const fsi_key_spec keys[] = {
      "Every this many steps the density is reset to the Shepard average of 000 Eq. 24 "
      "with a first-order correction that keeps a linear density field (docs/ulph.md; "
      "000: every 20 steps); 0 turns the filter off."},
+    {"viscous_operator", FSI_KEY_CHOICE, "-", "laplacian", 0, 0, 0, "laplacian|stress",
+     "laplacian: the viscous force is mu times a pairwise Laplacian of the velocity, which "
+     "damps every mode; stress: tau = 2 mu e' inside sigma of 000 Eq. 23 as printed, whose "
+     "nested gradients leave a velocity alternating from one particle row to the next "
+     "undamped (docs/ulph.md)."},
     {"tension", FSI_KEY_BOOL, "-", "false", 0, 0, 0, NULL,
      "false: the water does not sustain tension, a fluid particle's density is kept at or "
      "above rho0 (p >= 0, gauge against the atmosphere above a free surface; docs/ulph.md); "

@@ -52,12 +52,17 @@ void ulph_momentum_rates(const ulph_operators *ops, const ulph_momentum_params *
 {
     const int n = p->n;
     double *L = scratch->velocity_gradient, *A = scratch->stress_shape;
-    ulph_gradient_vector(ops, velocity_for_viscosity, L);
+    const double mu_stress = prm->viscous_laplacian ? 0.0 : prm->viscosity;
+    const double mu_laplacian = prm->viscous_laplacian ? prm->viscosity : 0.0;
+    if (prm->viscous_laplacian)
+        memset(L, 0, (size_t)n * FSI_MAT_SIZE * sizeof *L);
+    else
+        ulph_gradient_vector(ops, velocity_for_viscosity, L);
     /* Continuity sees the walls' own velocity (no penetration), not the virtual one. */
     ulph_divergence(ops, p->v, scratch->divergence);
 #pragma omp parallel for schedule(static) if (n >= ULPH_PARALLEL_MIN_PARTICLES)
     for (int i = 0; i < n; i++)
-        stress_shape(ops, p, prm->viscosity, &L[(size_t)i * FSI_MAT_SIZE], i,
+        stress_shape(ops, p, mu_stress, &L[(size_t)i * FSI_MAT_SIZE], i,
                      &A[(size_t)i * FSI_MAT_SIZE]);
 
     const double av = prm->artificial_viscosity * prm->h * prm->c0 * prm->rho0;
@@ -73,12 +78,14 @@ void ulph_momentum_rates(const ulph_operators *ops, const ulph_momentum_params *
         drho_dt[i] = -p->density[i] * scratch->divergence[i];
         double force[FSI_DIM] = {0};
         const double *Ai = &A[(size_t)i * FSI_MAT_SIZE];
+        const double trace_i = fsi_mat_trace(&ops->shape[(size_t)i * FSI_MAT_SIZE]);
+        const double *ui = &velocity_for_viscosity[i * FSI_DIM];
         for (int64_t k = ops->offset[i]; k < ops->offset[i + 1]; k++) {
             const int j = ops->neighbour[k];
             const double *Aj = &A[(size_t)j * FSI_MAT_SIZE];
             double xij[FSI_DIM], vx = 0.0, r2 = 0.0, sum[FSI_MAT_SIZE];
+            ulph_pair_vector(ops, p->x, i, j, xij);
             for (int d = 0; d < FSI_DIM; d++) {
-                xij[d] = p->x[j * FSI_DIM + d] - p->x[i * FSI_DIM + d];
                 vx += (velocity_for_viscosity[j * FSI_DIM + d] - p->v[i * FSI_DIM + d]) * xij[d];
                 r2 += xij[d] * xij[d];
             }
@@ -95,6 +102,13 @@ void ulph_momentum_rates(const ulph_operators *ops, const ulph_momentum_params *
                                        ? p->pressure[i] : 0.0;
             for (int d = 0; d < FSI_DIM; d++)
                 force[d] += wv * f[d] + (pi_ij + tension) * ops->g[k * FSI_DIM + d];
+            if (mu_laplacian > 0.0) {
+                const double trace_j = fsi_mat_trace(&ops->shape[(size_t)j * FSI_MAT_SIZE]);
+                const double c = mu_laplacian * 4.0 * FSI_DIM * wv / (trace_i + trace_j);
+                const double *uj = &velocity_for_viscosity[j * FSI_DIM];
+                for (int d = 0; d < FSI_DIM; d++)
+                    force[d] += c * (uj[d] - ui[d]);
+            }
         }
         for (int d = 0; d < FSI_DIM; d++)
             a_i[d] = force[d] / p->density[i] + prm->gravity[d];

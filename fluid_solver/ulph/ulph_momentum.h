@@ -12,6 +12,7 @@ typedef struct {
     double artificial_viscosity;/* alpha of 000 Eq. 26 */
     double h, c0, rho0;         /* smoothing length, sound speed, reference density */
     double gravity[FSI_DIM];
+    int viscous_laplacian;      /* 1: the pairwise Laplacian below instead of tau in Eq. 23 */
 } ulph_momentum_params;
 
 /* Scratch the rates need, n particles each: velocity gradient L (FSI_MAT_SIZE),
@@ -37,6 +38,14 @@ void ulph_momentum_free(ulph_momentum_scratch *s);
  * (v_IJ = v_J - v_I: negative when I and J approach; Pi_I then pushes I away from J),
  * v_J of a wall particle being its velocity_for_viscosity (the mirrored velocity of
  * 000 Eq. 50), so that a wall resists a fluid particle's approach in both slip modes.
+ * With viscous_laplacian the viscous force is instead mu times the pairwise Laplacian
+ *   lap u_I = 2 DIM sum_J w V_J (u_J - u_I) / ((tr M_I + tr M_J) / 2)
+ * (u = velocity_for_viscosity; exact for a quadratic field where M is isotropic and the
+ * first moment vanishes, since sum_J w V_J x_IJ (x) x_IJ = M_I) and tau drops out of
+ * sigma: the nested gradients of Eq. 23 cannot see a field that alternates from one
+ * particle row to the next (its gradient is zero at every particle), so such a mode is
+ * never damped (docs/ulph.md, plane Poiseuille flow). The pair terms are antisymmetric:
+ * momentum is conserved exactly.
  * A wall pushes, never pulls: against a wall or moving boundary particle a fluid
  * particle's pressure counts as max(p_I, 0) (with tension = true p_I may be negative,
  * and -p_I M_I^-1 would draw I into the wall).

@@ -139,8 +139,7 @@ static int fill_row(ulph_operators *ops, const ulph_kernel *k, const fsi_neighbo
         const double w = ulph_kernel_w2(k, r2);
         const double wv = w * volume[j];
         double *rel = ops->g + e * FSI_DIM; /* x_IJ for now, g_IJ below */
-        for (int d = 0; d < FSI_DIM; d++)
-            rel[d] = x[(int64_t)j * FSI_DIM + d] - xi[d];
+        ulph_pair_vector(ops, x, i, j, rel);
         ops->neighbour[e] = j;
         ops->w[e] = w;
         fsi_mat_add_outer(m, wv, rel, rel);     /* 000 Eq. 15 */
@@ -180,6 +179,7 @@ int ulph_operators_update(ulph_operators *ops, const ulph_kernel *k,
     ops->n = 0;
     ops->n_pairs = 0;
     ops->n_singular = 0;
+    ops->periodic = grid->periodic;
     if (grid->n != n || n < 0 || reserve_points(ops, n) != 0) {
         ulph_operators_free(ops);
         return -1;

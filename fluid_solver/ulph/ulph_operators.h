@@ -97,7 +97,18 @@ typedef struct {
     double max_condition;   /* bound of the rule above */
     int point_capacity;     /* allocated sizes */
     int64_t pair_capacity;
+    fsi_periodic periodic;  /* the grid's periodic axes at the last update */
 } ulph_operators;
+
+/* x_IJ = x_J - x_I, the nearest periodic image along periodic axes: every pair
+ * computation (operators, momentum, walls, filter) takes its vector from here. */
+static inline void ulph_pair_vector(const ulph_operators *ops, const double *x, int i, int j,
+                                    double *rel)
+{
+    for (int d = 0; d < FSI_DIM; d++)
+        rel[d] = x[(int64_t)j * FSI_DIM + d] - x[(int64_t)i * FSI_DIM + d];
+    fsi_periodic_min_image(&ops->periodic, rel);
+}
 
 /* Empty operators (no allocation), max_condition = ULPH_MAX_CONDITION_M. */
 void ulph_operators_init(ulph_operators *ops);

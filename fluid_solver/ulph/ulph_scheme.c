@@ -82,6 +82,8 @@ fluid_scheme *fluid_scheme_create(const fsi_case *c, const char *role,
     s->momentum.viscosity = props->viscosity;
     s->momentum.artificial_viscosity = fsi_case_get_real(c, role, "artificial_viscosity", 0.02);
     s->momentum.h = s->kernel.h;
+    const char *viscous = fsi_case_get(c, role, "viscous_operator");
+    s->momentum.viscous_laplacian = !viscous || strcmp(viscous, "laplacian") == 0;
     s->momentum.c0 = props->sound_speed;
     s->momentum.rho0 = props->density;
     memcpy(s->momentum.gravity, props->gravity, sizeof s->momentum.gravity);
@@ -93,6 +95,7 @@ fluid_scheme *fluid_scheme_create(const fsi_case *c, const char *role,
     s->filter_interval = fsi_case_get_int(c, role, "density_filter_interval", 20);
     s->tension = fsi_case_get_bool(c, role, "tension", 0);
     fsi_grid_init(&s->grid);
+    fsi_grid_set_periodic(&s->grid, &props->periodic);
     ulph_operators_init(&s->ops);
     if (reserve(s, p->n) != 0) {
         fluid_scheme_free(s);
@@ -175,9 +178,10 @@ static void density_filter(fluid_scheme *s, fluid_particles *p)
             const int j = ops->neighbour[k];
             if (!(p->flags[j] & (FLUID_PARTICLE_FLUID | FLUID_PARTICLE_WALL)))
                 continue;
-            double shift = 0.0;
+            double shift = 0.0, xij[FSI_DIM];
+            ulph_pair_vector(ops, p->x, i, j, xij);
             for (int d = 0; d < FSI_DIM; d++)
-                shift += grad[d] * (p->x[j * FSI_DIM + d] - p->x[i * FSI_DIM + d]);
+                shift += grad[d] * xij[d];
             wm += ops->w[k] * (p->mass[j] - p->volume[j] * shift);
             wv += ops->w[k] * p->volume[j];
         }

@@ -23,11 +23,13 @@ void ulph_walls_update(const ulph_operators *ops, const ulph_eos *eos, const dou
             if (!(p->flags[f] & FLUID_PARTICLE_FLUID))
                 continue;
             const double w = ops->w[k];
+            double xsf[FSI_DIM]; /* x_f - x_S */
+            ulph_pair_vector(ops, p->x, s, f, xsf);
             sum_w += w;
             sum_pw += p->pressure[f] * w;
             for (int d = 0; d < FSI_DIM; d++) {
-                head[d] += p->density[f] * (p->x[s * FSI_DIM + d] - p->x[f * FSI_DIM + d]) * w;
-                toward[d] += (p->x[f * FSI_DIM + d] - p->x[s * FSI_DIM + d]) * w;
+                head[d] -= p->density[f] * xsf[d] * w;
+                toward[d] += xsf[d] * w;
                 v_mean[d] += p->v[f * FSI_DIM + d] * w;
             }
         }
