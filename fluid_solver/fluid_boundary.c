@@ -104,14 +104,9 @@ void fluid_boundary_move(const fluid_boundary *b, fluid_particles *p, double tau
 {
     for (int k = 0; k < b->n * FSI_DIM; k++) {
         const double a = b->acceleration[k];
-        p->x[b->n_fixed * FSI_DIM + k] = b->x_start[k] + tau * (b->v_start[k] + 0.5 * tau * a);
-        p->v[b->n_fixed * FSI_DIM + k] = b->v_start[k] + tau * a;
+        const int i = b->n_fixed * FSI_DIM + k;
+        p->x[i] = b->x_start[k] + tau * (b->v_start[k] + 0.5 * tau * a);
+        p->v[i] = b->v_start[k] + tau * a;
+        p->boundary_acceleration[i] = a;
     }
-}
-
-void fluid_boundary_accelerations(const fluid_boundary *b, double *acceleration)
-{
-    if (b->n > 0)
-        memcpy(acceleration + (size_t)b->n_fixed * FSI_DIM, b->acceleration,
-               (size_t)b->n * FSI_DIM * sizeof *acceleration);
 }

@@ -40,11 +40,8 @@ void fluid_boundary_free(fluid_boundary *b);
 int fluid_boundary_set(fluid_boundary *b, fluid_particles *p, const fsi_interface *solid,
                        double rho0, char *msg, size_t msg_size);
 
-/* Puts the tail at t_k + tau (positions and velocities). */
+/* Puts the tail at t_k + tau: positions, velocities and accelerations
+ * (p->boundary_acceleration, the a_S of 000 Eq. 52). */
 void fluid_boundary_move(const fluid_boundary *b, fluid_particles *p, double tau);
-
-/* The tail's accelerations into acceleration[i * FSI_DIM + d] for i in
- * [n_fixed, n_fixed + n) (the a_S of 000 Eq. 52). */
-void fluid_boundary_accelerations(const fluid_boundary *b, double *acceleration);
 
 #endif

@@ -5,11 +5,12 @@
  *
  *   setup   blocks and walls -> particles, the fluid's properties (c0 from 000 Eq. 7
  *           when not given), the initial pressure, the scheme, probes, output file
- *   window  read the solid's state and publish the loads (empty in a fluid-only run),
- *           sub-cycle the predictor-corrector of 000 Eq. 56 in n = ceil(window /
- *           stable step) equal steps, check health after every step and the energy
- *           after every window, probes, output, propose DBL_MAX (sub-cycling: the
- *           fluid does not limit the window)
+ *   window  read the solid's state into the moving boundary particles and publish the
+ *           loads of the last window (fluid_coupling.h; empty in a fluid-only run),
+ *           sub-cycle the predictor-corrector of 000 Eq. 56 with the step chosen at
+ *           every step from the stable step, check health after every step and the
+ *           energy after every window, probes, output, propose DBL_MAX (sub-cycling:
+ *           the fluid does not limit the window)
  *
  * A failure anywhere stops everyone with fsi_abort naming what, the particle, where and
  * when; nothing non-finite is ever written or sent. */
@@ -21,6 +22,7 @@
 #include <string.h>
 
 #include "dim.h"
+#include "fluid_coupling.h"
 #include "fluid_geometry.h"
 #include "fluid_periodic.h"
 #include "fluid_probes.h"
@@ -52,6 +54,8 @@ typedef struct {
     fluid_scheme *scheme;
     fluid_probes probes;
     fluid_wall_motion motion;
+    fluid_coupling coupling;    /* the solid's particles at the tail of p (000 §3) */
+    int n_fixed;        /* fluid and wall particles of the case, before that tail */
     double t;           /* time of the current state (walls are put there) */
     double wall_work;   /* work of the moving walls on the fluid so far [J] */
     int n_fluid;
@@ -63,13 +67,9 @@ typedef struct {
     fsi_timers timers;
     int t_rates, t_integrate, t_exchange, t_output;
     long steps;
+    int capacity;       /* particles x0 .. grad_p hold */
     char msg[512];
 } fluid_run;
-
-static double *new_vector(int n, int ncomp)
-{
-    return calloc((size_t)(n > 0 ? n : 1) * (size_t)ncomp, sizeof(double));
-}
 
 /* "(x, y)" of particle i's current position, for messages. */
 static const char *where_text(const fluid_run *s, int i, char *buf, size_t size)
@@ -84,6 +84,7 @@ static void free_run(fluid_run *s)
     fluid_scheme_free(s->scheme);
     fluid_probes_free(&s->probes);
     fluid_wall_motion_free(&s->motion);
+    fluid_coupling_free(&s->coupling);
     fluid_particles_free(&s->p);
     fluid_geometry_free(&s->geometry);
     free(s->free_slip);
@@ -203,10 +204,33 @@ static int write_static(fluid_run *s)
 static int evaluate(fluid_run *s)
 {
     fluid_wall_motion_apply(&s->motion, s->t, &s->p);
+    fluid_coupling_move(&s->coupling, &s->p, s->t);
     fsi_timer_start(&s->timers, s->t_rates);
     int rc = fluid_scheme_rates(s->scheme, &s->p, s->drho, s->accel, s->msg, sizeof s->msg);
     fsi_timer_stop(&s->timers, s->t_rates);
     return rc;
+}
+
+/* The run's per-particle arrays for p->n particles (the solid's set may change size
+ * from one window to the next). 0, or -1 when memory runs out. */
+static int reserve_run_arrays(fluid_run *s)
+{
+    const int n = s->p.n;
+    if (n <= s->capacity)
+        return 0;
+    const size_t cap = (size_t)n + (size_t)n / 4 + 16;
+    double **arrays[] = {&s->x0, &s->v0, &s->rho0, &s->drho, &s->accel, &s->grad_p};
+    const size_t width[] = {FSI_DIM, FSI_DIM, 1, 1, FSI_DIM, FSI_DIM};
+    for (size_t a = 0; a < sizeof arrays / sizeof arrays[0]; a++) {
+        double *grown = realloc(*arrays[a], cap * width[a] * sizeof *grown);
+        if (!grown)
+            return -1;
+        memset(grown + (size_t)s->capacity * width[a], 0,
+               (cap - (size_t)s->capacity) * width[a] * sizeof *grown);
+        *arrays[a] = grown;
+    }
+    s->capacity = (int)cap;
+    return 0;
 }
 
 /* Everything before the first window. Returns 0, or -1 with s->msg set. */
@@ -235,19 +259,14 @@ static int setup(fluid_run *s, fsi_participant *part)
     pr->free_slip = s->free_slip;
     if (fluid_wall_motion_init(&s->motion, &s->geometry, &s->p, s->msg, ms) != 0)
         return -1;
-    pr->wall_acceleration = s->motion.acceleration;
     fluid_particles *p = &s->p;
     for (int i = 0; i < p->n; i++)
         s->n_fluid += (p->flags[i] & FLUID_PARTICLE_FLUID) != 0;
     s->energy_limit = fsi_case_get_real(c, ROLE, "energy_growth_limit", 2.0);
 
-    s->x0 = new_vector(p->n, FSI_DIM);
-    s->v0 = new_vector(p->n, FSI_DIM);
-    s->rho0 = new_vector(p->n, 1);
-    s->drho = new_vector(p->n, 1);
-    s->accel = new_vector(p->n, FSI_DIM);
-    s->grad_p = new_vector(p->n, FSI_DIM);
-    if (!s->x0 || !s->v0 || !s->rho0 || !s->drho || !s->accel || !s->grad_p) {
+    s->n_fixed = p->n;
+    fluid_coupling_init(&s->coupling, p->n);
+    if (reserve_run_arrays(s) != 0) {
         snprintf(s->msg, ms, "out of memory for %d fluid particles", p->n);
         return -1;
     }
@@ -369,9 +388,14 @@ static int step(fluid_run *s, double dt)
     s->t = t_start + 0.5 * dt;     /* moving walls at the mid-step time */
     if (evaluate(s) != 0)
         return -1;
-    /* Midpoint rule for the work of moving walls (the energy check's budget). */
+    /* Midpoint rule for the work of moving walls (the energy check's budget) and the
+     * impulse on the solid's particles (the loads sent back). */
     s->wall_work += dt * fluid_wall_motion_power(&s->motion, s->t, p, s->accel,
                                                  s->props.gravity);
+    if (fluid_coupling_accumulate(&s->coupling, s->scheme, p, dt) != 0) {
+        snprintf(s->msg, sizeof s->msg, "out of memory for the loads on the solid");
+        return -1;
+    }
     s->t = t_start + dt;
     fsi_timer_start(&s->timers, s->t_integrate);
     for (int i = 0; i < n; i++) {
@@ -392,30 +416,43 @@ static int step(fluid_run *s, double dt)
     return 0;
 }
 
-/* The window [t0, t0 + dt] in equal steps no longer than the stable step at its start. */
+/* The window [t0, t0 + dt] in steps chosen at every step from the rates at its start
+ * (fluid_scheme_stable_dt: acoustic, viscous and force limits), the remaining time cut
+ * into equal parts no longer than that, so that the window's end is met exactly. */
 static int advance(fluid_run *s, double t0, double dt, int window)
 {
     s->t = t0;
     if (evaluate(s) != 0)
         return -1;
-    if (dt <= 0.0)
-        return 0;
-    double stable = fluid_scheme_stable_dt(s->scheme, &s->p, max_acceleration(s));
-    if (!(stable > 0.0) || !isfinite(stable) || dt / stable > (double)MAX_SUBSTEPS) {
-        snprintf(s->msg, sizeof s->msg, "the stable step is %g s at t = %.9g s (window %d): "
-                 "the window of %g s cannot be sub-cycled", stable, t0, window, dt);
-        return -1;
-    }
-    /* 1e-9: a window equal to a whole number of steps up to round-off gets no more. */
-    long n = (long)ceil(dt / stable - 1e-9);
-    if (n < 1)
-        n = 1;
-    const double h = dt / (double)n;
-    for (long j = 0; j < n; j++) {
+    const double t_end = t0 + dt;
+    for (long j = 0;; j++) {
+        const double remaining = t_end - s->t;
+        if (!(remaining > 1e-12 * dt))
+            break;
         if (j > 0 && evaluate(s) != 0)
             return -1;
-        if (step(s, h) != 0 || check_finite(s, t0 + h * (double)(j + 1), window) != 0)
+        const double stable = fluid_scheme_stable_dt(s->scheme, &s->p, max_acceleration(s));
+        if (!(stable > 0.0) || !isfinite(stable) || j >= MAX_SUBSTEPS ||
+            remaining / stable > (double)MAX_SUBSTEPS) {
+            snprintf(s->msg, sizeof s->msg, "the stable step is %g s at t = %.9g s (window "
+                     "%d, %ld steps into it): the window of %g s cannot be sub-cycled",
+                     stable, s->t, window, j, dt);
             return -1;
+        }
+        /* 1e-9: a remainder equal to a whole number of steps up to round-off gets no
+         * more. */
+        long m = (long)ceil(remaining / stable - 1e-9);
+        if (m < 1)
+            m = 1;
+        const double h = m == 1 ? remaining : remaining / (double)m;
+        if (step(s, h) != 0 || check_finite(s, s->t, window) != 0)
+            return -1;
+        if (m == 1)
+            s->t = t_end;
+    }
+    if (fluid_coupling_end_window(&s->coupling, &s->p, dt) != 0) {
+        snprintf(s->msg, sizeof s->msg, "out of memory for the loads on the solid");
+        return -1;
     }
     return 0;
 }
@@ -426,7 +463,7 @@ static int check_health(fluid_run *s, double t, int window)
 {
     const fluid_particles *p = &s->p;
     /* The box includes the reach of moving walls: only fluid particles can leave. */
-    const int i = fsi_outside_box(p->x, p->n, s->box_min, s->box_max);
+    const int i = fsi_outside_box(p->x, s->n_fixed, s->box_min, s->box_max);
     if (i >= 0) {
         char at[128];
         snprintf(s->msg, sizeof s->msg, "particle %d left the domain: at %s, more than %g "
@@ -470,7 +507,8 @@ static int write_frame(fluid_run *s, int frame, double t, long window)
     int32_t *flags = flags_as_int32(p);
     if (!flags)
         return -1;
-    int rc = fsi_h5_begin_frame(s->out, frame, t, window, p->n, p->x) != 0 ||
+    /* The case's fluid and walls; the solid's particles are in the solid's output. */
+    int rc = fsi_h5_begin_frame(s->out, frame, t, window, s->n_fixed, p->x) != 0 ||
              fsi_h5_write_field_real(s->out, "velocity", p->v, FSI_DIM) != 0 ||
              fsi_h5_write_field_real(s->out, "acceleration", s->accel, FSI_DIM) != 0 ||
              fsi_h5_write_field_real(s->out, "density", p->density, 1) != 0 ||
@@ -481,21 +519,16 @@ static int write_frame(fluid_run *s, int frame, double t, long window)
     return rc ? -1 : fsi_h5_end_frame(s->out);
 }
 
-/* Reads the solid's state and publishes the loads on it. A fluid-only run exchanges
- * empty interfaces; moving boundary particles (the solid seen by the fluid, 000 §3)
- * come with the coupling issue, so a solid that sends particles is refused. */
-static int exchange(fluid_run *s, fsi_participant *part)
+/* Reads the solid's state (its particles become the moving boundary, 000 §3) and
+ * publishes the loads of the last window on them (fluid_coupling.h). A fluid-only run
+ * exchanges empty interfaces. */
+static int exchange(fluid_run *s, fsi_participant *part, double t0)
 {
-    fsi_interface solid;
-    fsi_read_interface(part, &solid);
-    if (solid.n > 0) {
-        snprintf(s->msg, sizeof s->msg, "the solid sent %d interface particles, but this "
-                 "fluid does not take moving boundaries yet: run it alone", solid.n);
+    if (fluid_coupling_exchange(&s->coupling, part, &s->p, s->props.density, t0, s->msg,
+                                sizeof s->msg) != 0)
         return -1;
-    }
-    fsi_interface loads = {0, NULL, NULL, NULL, NULL, NULL, NULL, NULL};
-    if (fsi_write_interface(part, &loads) != 0) {
-        snprintf(s->msg, sizeof s->msg, "cannot publish the fluid loads");
+    if (reserve_run_arrays(s) != 0) {
+        snprintf(s->msg, sizeof s->msg, "out of memory for %d particles", s->p.n);
         return -1;
     }
     return 0;
@@ -524,7 +557,7 @@ int main(void)
         int window = fsi_window_index(part);
 
         fsi_timer_start(&s.timers, s.t_exchange);
-        int rc = exchange(&s, part);
+        int rc = exchange(&s, part, t0);
         fsi_timer_stop(&s.timers, s.t_exchange);
         if (rc != 0) {
             fsi_abort(part, "window %d: %s", window, s.msg);

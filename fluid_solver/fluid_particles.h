@@ -43,6 +43,9 @@ typedef struct {
     double *volume;         /* V = m / rho [m^DIM] (2D: per unit thickness) */
     double *density;        /* rho [kg/m^3] */
     double *pressure;       /* p [Pa] */
+    double *boundary_acceleration; /* a_S of a wall or moving boundary particle (000
+                             * Eq. 52): its prescribed or received acceleration; 0 for
+                             * fluid particles and fixed walls [m/s^2] */
     uint8_t *flags;         /* FLUID_PARTICLE_* */
 } fluid_particles;
 
@@ -56,6 +59,7 @@ static inline void fluid_particles_free(fluid_particles *p)
     free(p->volume);
     free(p->density);
     free(p->pressure);
+    free(p->boundary_acceleration);
     free(p->flags);
     *p = (fluid_particles){0};
 }
@@ -77,9 +81,10 @@ static inline int fluid_particles_alloc(fluid_particles *p, int n, double spacin
     p->volume = calloc(m, sizeof *p->volume);
     p->density = calloc(m, sizeof *p->density);
     p->pressure = calloc(m, sizeof *p->pressure);
+    p->boundary_acceleration = calloc(m * FSI_DIM, sizeof *p->boundary_acceleration);
     p->flags = calloc(m, sizeof *p->flags);
     if (!p->id || !p->x || !p->v || !p->mass || !p->volume || !p->density || !p->pressure ||
-        !p->flags) {
+        !p->boundary_acceleration || !p->flags) {
         fluid_particles_free(p);
         return -1;
     }
@@ -105,6 +110,8 @@ static inline int fluid_particles_resize(fluid_particles *p, int n)
     memcpy(q.volume, p->volume, keep * sizeof *q.volume);
     memcpy(q.density, p->density, keep * sizeof *q.density);
     memcpy(q.pressure, p->pressure, keep * sizeof *q.pressure);
+    memcpy(q.boundary_acceleration, p->boundary_acceleration,
+           keep * FSI_DIM * sizeof *q.boundary_acceleration);
     memcpy(q.flags, p->flags, keep * sizeof *q.flags);
     fluid_particles_free(p);
     *p = q;

@@ -10,7 +10,8 @@
  *   - wall particles: the scheme sets their pressure, density and mass (the ghost
  *     boundary of 000 §2.3); their rates are zero: the main loop puts them where their
  *     prescribed motion says, with its velocity (v_S) and acceleration
- *     (props->wall_acceleration, a_S), before each evaluation.
+ *     (p->boundary_acceleration, a_S), before each evaluation; moving boundary
+ *     particles (the solid, fluid_boundary.h) likewise from the solid's state.
  * Rates of any other particle are zero. The number of particles may change between
  * calls (the moving boundary set at the tail, fluid_boundary.h): a scheme sizes its
  * per-particle scratch to p->n at every call. */
@@ -34,10 +35,6 @@ typedef struct {
     double tait_exponent;       /* gamma (000 Eq. 6) */
     double gravity[FSI_DIM];    /* [m/s^2] */
     const unsigned char *free_slip; /* per particle: 1 for a free-slip wall particle */
-    /* per particle (n * FSI_DIM), the prescribed acceleration of a moving wall particle
-     * at the time of the current rates (000 Eq. 52's a_S), kept up to date by the main
-     * loop; NULL when no wall moves */
-    const double *wall_acceleration;
     fsi_periodic periodic;      /* periodic axes (fluid_periodic.h); none by default */
 } fluid_properties;
 
@@ -71,6 +68,13 @@ double fluid_scheme_smoothing_length(const fluid_scheme *s);
  * grad[n * FSI_DIM]. */
 void fluid_scheme_pressure_gradient(const fluid_scheme *s, const fluid_particles *p,
                                     double *grad);
+
+/* The force the fluid exerts on every moving boundary particle (force[n * FSI_DIM];
+ * zero for the others) at the state of the last rates call: the exact reaction of the
+ * pair terms between each boundary particle and its fluid neighbours, so that the
+ * forces on fluid and boundary balance to round-off. */
+void fluid_scheme_boundary_loads(const fluid_scheme *s, const fluid_particles *p,
+                                 double *force);
 
 /* The scheme's own fields of the current frame (e.g. flags of singular families). */
 int fluid_scheme_write_fields(const fluid_scheme *s, fsi_h5_writer *out);

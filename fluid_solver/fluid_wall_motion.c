@@ -28,8 +28,7 @@ int fluid_wall_motion_init(fluid_wall_motion *w, const fluid_geometry *g,
     w->particle = malloc((size_t)moving * sizeof *w->particle);
     w->law = malloc((size_t)moving * sizeof *w->law);
     w->x_start = malloc((size_t)moving * FSI_DIM * sizeof *w->x_start);
-    w->acceleration = calloc((size_t)p->n * FSI_DIM, sizeof *w->acceleration);
-    if (!w->particle || !w->law || !w->x_start || !w->acceleration) {
+    if (!w->particle || !w->law || !w->x_start) {
         fluid_wall_motion_free(w);
         snprintf(msg, msg_size, "out of memory for %d moving wall particles", moving);
         return -1;
@@ -58,7 +57,8 @@ void fluid_wall_motion_apply(fluid_wall_motion *w, double t, fluid_particles *p)
     for (int k = 0; k < w->n_moving; k++) {
         const int i = w->particle[k];
         double s[FSI_DIM];
-        fluid_motion_at(w->law[k], t, s, &p->v[i * FSI_DIM], &w->acceleration[i * FSI_DIM]);
+        fluid_motion_at(w->law[k], t, s, &p->v[i * FSI_DIM],
+                        &p->boundary_acceleration[i * FSI_DIM]);
         for (int d = 0; d < FSI_DIM; d++)
             p->x[i * FSI_DIM + d] = w->x_start[k * FSI_DIM + d] + s[d];
     }
@@ -99,6 +99,5 @@ void fluid_wall_motion_free(fluid_wall_motion *w)
     free(w->particle);
     free(w->law);
     free(w->x_start);
-    free(w->acceleration);
     memset(w, 0, sizeof *w);
 }

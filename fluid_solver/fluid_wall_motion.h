@@ -1,7 +1,7 @@
 /* Walls that move with a prescribed rigid motion (fluid_motion.h): before every
  * evaluation of the rates the main loop puts each moving wall particle at
  * x0 + X(t) with velocity X'(t) and acceleration X''(t), the a_S of 000 Eq. 52
- * (fluid_scheme.h, props->wall_acceleration). Several walls with the same law move as
+ * (p->boundary_acceleration). Several walls with the same law move as
  * one tank. */
 #ifndef FSI_FLUID_WALL_MOTION_H
 #define FSI_FLUID_WALL_MOTION_H
@@ -16,8 +16,6 @@ typedef struct {
     int *particle;              /* their indices */
     const fluid_motion **law;   /* their motion (the box's) */
     double *x_start;            /* their position in the case, n_moving * FSI_DIM */
-    double *acceleration;       /* every particle, n * FSI_DIM: X''(t) of a moving wall
-                                 * particle, 0 otherwise (NULL when nothing moves) */
     const fluid_motion *tank;   /* the one law every moving wall follows, or NULL when
                                  * none moves or laws differ */
 } fluid_wall_motion;
@@ -27,7 +25,8 @@ typedef struct {
 int fluid_wall_motion_init(fluid_wall_motion *w, const fluid_geometry *g,
                            const fluid_particles *p, char *msg, size_t msg_size);
 
-/* Moving wall particles to their position, velocity and acceleration at time t. */
+/* Moving wall particles to their position, velocity and acceleration
+ * (p->boundary_acceleration) at time t. */
 void fluid_wall_motion_apply(fluid_wall_motion *w, double t, fluid_particles *p);
 
 /* Widens the box [box_min, box_max] by the reach of every moving wall along each axis,

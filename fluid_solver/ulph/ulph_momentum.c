@@ -46,6 +46,61 @@ static void stress_shape(const ulph_operators *ops, const fluid_particles *p, do
     fsi_mat_mul(sigma, &ops->shape_inv[(size_t)i * FSI_MAT_SIZE], out);
 }
 
+/* What every pair term needs (the rates and the boundary loads share it, so that the
+ * load on a boundary particle is the exact reaction of the force on the fluid). */
+typedef struct {
+    const ulph_operators *ops;
+    const fluid_particles *p;
+    const double *vv;           /* velocity_for_viscosity */
+    const double *A;            /* sigma M^-1 per particle */
+    double av, eps2, mu_laplacian;
+} pair_context;
+
+/* The force density on fluid particle I from neighbour J (entry k of I's row); the
+ * force on I is V_I times it. */
+static inline void pair_force(const pair_context *c, int i, int64_t k, double *out)
+{
+    const ulph_operators *ops = c->ops;
+    const fluid_particles *p = c->p;
+    const int j = ops->neighbour[k];
+    const double *Ai = &c->A[(size_t)i * FSI_MAT_SIZE], *Aj = &c->A[(size_t)j * FSI_MAT_SIZE];
+    double xij[FSI_DIM], vx = 0.0, r2 = 0.0, sum[FSI_MAT_SIZE];
+    ulph_pair_vector(ops, p->x, i, j, xij);
+    for (int d = 0; d < FSI_DIM; d++) {
+        vx += (c->vv[j * FSI_DIM + d] - p->v[i * FSI_DIM + d]) * xij[d];
+        r2 += xij[d] * xij[d];
+    }
+    for (int m = 0; m < FSI_MAT_SIZE; m++)
+        sum[m] = Ai[m] + Aj[m];
+    double f[FSI_DIM];
+    fsi_mat_vec(sum, xij, f);
+    const double wv = ops->w[k] * p->volume[j];
+    /* g_IJ = w V_J M_I^-1 x_IJ (ulph_operators.h): 000 Eq. 26 per pair. */
+    const double pi_ij = vx < 0.0 ? c->av * vx / (r2 + c->eps2) : 0.0;
+    /* A wall pushes, never pulls: with p_I < 0 the pair's -p_I M_I^-1 term would draw I
+     * into the wall, so p_I counts as 0 against a wall. */
+    const double tension = p->pressure[i] < 0.0 && !(p->flags[j] & FLUID_PARTICLE_FLUID)
+                               ? p->pressure[i] : 0.0;
+    for (int d = 0; d < FSI_DIM; d++)
+        out[d] = wv * f[d] + (pi_ij + tension) * ops->g[k * FSI_DIM + d];
+    if (c->mu_laplacian > 0.0) {
+        const double trace_i = fsi_mat_trace(&ops->shape[(size_t)i * FSI_MAT_SIZE]);
+        const double trace_j = fsi_mat_trace(&ops->shape[(size_t)j * FSI_MAT_SIZE]);
+        const double lap = c->mu_laplacian * 4.0 * FSI_DIM * wv / (trace_i + trace_j);
+        for (int d = 0; d < FSI_DIM; d++)
+            out[d] += lap * (c->vv[j * FSI_DIM + d] - c->vv[i * FSI_DIM + d]);
+    }
+}
+
+static pair_context make_context(const ulph_operators *ops, const ulph_momentum_params *prm,
+                                 const fluid_particles *p, const double *vv, const double *A)
+{
+    return (pair_context){ops, p, vv, A,
+                          prm->artificial_viscosity * prm->h * prm->c0 * prm->rho0,
+                          0.01 * prm->h * prm->h,
+                          prm->viscous_laplacian ? prm->viscosity : 0.0};
+}
+
 void ulph_momentum_rates(const ulph_operators *ops, const ulph_momentum_params *prm,
                          const fluid_particles *p, const double *velocity_for_viscosity,
                          ulph_momentum_scratch *scratch, double *drho_dt, double *dv_dt)
@@ -53,7 +108,6 @@ void ulph_momentum_rates(const ulph_operators *ops, const ulph_momentum_params *
     const int n = p->n;
     double *L = scratch->velocity_gradient, *A = scratch->stress_shape;
     const double mu_stress = prm->viscous_laplacian ? 0.0 : prm->viscosity;
-    const double mu_laplacian = prm->viscous_laplacian ? prm->viscosity : 0.0;
     if (prm->viscous_laplacian)
         memset(L, 0, (size_t)n * FSI_MAT_SIZE * sizeof *L);
     else
@@ -65,8 +119,7 @@ void ulph_momentum_rates(const ulph_operators *ops, const ulph_momentum_params *
         stress_shape(ops, p, mu_stress, &L[(size_t)i * FSI_MAT_SIZE], i,
                      &A[(size_t)i * FSI_MAT_SIZE]);
 
-    const double av = prm->artificial_viscosity * prm->h * prm->c0 * prm->rho0;
-    const double eps2 = 0.01 * prm->h * prm->h;
+    const pair_context c = make_context(ops, prm, p, velocity_for_viscosity, A);
 #pragma omp parallel for schedule(static) if (n >= ULPH_PARALLEL_MIN_PARTICLES)
     for (int i = 0; i < n; i++) {
         double *a_i = &dv_dt[i * FSI_DIM];
@@ -77,40 +130,44 @@ void ulph_momentum_rates(const ulph_operators *ops, const ulph_momentum_params *
         }
         drho_dt[i] = -p->density[i] * scratch->divergence[i];
         double force[FSI_DIM] = {0};
-        const double *Ai = &A[(size_t)i * FSI_MAT_SIZE];
-        const double trace_i = fsi_mat_trace(&ops->shape[(size_t)i * FSI_MAT_SIZE]);
-        const double *ui = &velocity_for_viscosity[i * FSI_DIM];
         for (int64_t k = ops->offset[i]; k < ops->offset[i + 1]; k++) {
-            const int j = ops->neighbour[k];
-            const double *Aj = &A[(size_t)j * FSI_MAT_SIZE];
-            double xij[FSI_DIM], vx = 0.0, r2 = 0.0, sum[FSI_MAT_SIZE];
-            ulph_pair_vector(ops, p->x, i, j, xij);
-            for (int d = 0; d < FSI_DIM; d++) {
-                vx += (velocity_for_viscosity[j * FSI_DIM + d] - p->v[i * FSI_DIM + d]) * xij[d];
-                r2 += xij[d] * xij[d];
-            }
-            for (int m = 0; m < FSI_MAT_SIZE; m++)
-                sum[m] = Ai[m] + Aj[m];
             double f[FSI_DIM];
-            fsi_mat_vec(sum, xij, f);
-            const double wv = ops->w[k] * p->volume[j];
-            /* g_IJ = w V_J M_I^-1 x_IJ (ulph_operators.h): 000 Eq. 26 per pair. */
-            const double pi_ij = vx < 0.0 ? av * vx / (r2 + eps2) : 0.0;
-            /* A wall pushes, never pulls: with p_I < 0 the pair's -p_I M_I^-1 term
-             * would draw I into the wall, so p_I counts as 0 against a wall. */
-            const double tension = p->pressure[i] < 0.0 && !(p->flags[j] & FLUID_PARTICLE_FLUID)
-                                       ? p->pressure[i] : 0.0;
+            pair_force(&c, i, k, f);
             for (int d = 0; d < FSI_DIM; d++)
-                force[d] += wv * f[d] + (pi_ij + tension) * ops->g[k * FSI_DIM + d];
-            if (mu_laplacian > 0.0) {
-                const double trace_j = fsi_mat_trace(&ops->shape[(size_t)j * FSI_MAT_SIZE]);
-                const double c = mu_laplacian * 4.0 * FSI_DIM * wv / (trace_i + trace_j);
-                const double *uj = &velocity_for_viscosity[j * FSI_DIM];
-                for (int d = 0; d < FSI_DIM; d++)
-                    force[d] += c * (uj[d] - ui[d]);
-            }
+                force[d] += f[d];
         }
         for (int d = 0; d < FSI_DIM; d++)
             a_i[d] = force[d] / p->density[i] + prm->gravity[d];
+    }
+}
+
+void ulph_boundary_loads(const ulph_operators *ops, const ulph_momentum_params *prm,
+                         const fluid_particles *p, const double *velocity_for_viscosity,
+                         const ulph_momentum_scratch *scratch, double *force)
+{
+    const int n = p->n;
+    const pair_context c = make_context(ops, prm, p, velocity_for_viscosity,
+                                        scratch->stress_shape);
+#pragma omp parallel for schedule(static) if (n >= ULPH_PARALLEL_MIN_PARTICLES)
+    for (int b = 0; b < n; b++) {
+        double *f_b = &force[b * FSI_DIM];
+        memset(f_b, 0, FSI_DIM * sizeof *f_b);
+        if (!(p->flags[b] & FLUID_PARTICLE_MOVING_BOUNDARY))
+            continue;
+        for (int64_t kb = ops->offset[b]; kb < ops->offset[b + 1]; kb++) {
+            const int i = ops->neighbour[kb];
+            if (!(p->flags[i] & FLUID_PARTICLE_FLUID))
+                continue;
+            /* b's entry in i's row: the same w and g_IB the rates used. */
+            for (int64_t k = ops->offset[i]; k < ops->offset[i + 1]; k++) {
+                if (ops->neighbour[k] != b)
+                    continue;
+                double f[FSI_DIM];
+                pair_force(&c, i, k, f);
+                for (int d = 0; d < FSI_DIM; d++)
+                    f_b[d] -= p->volume[i] * f[d];
+                break;
+            }
+        }
     }
 }

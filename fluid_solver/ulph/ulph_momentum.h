@@ -54,4 +54,15 @@ void ulph_momentum_rates(const ulph_operators *ops, const ulph_momentum_params *
                          const fluid_particles *p, const double *velocity_for_viscosity,
                          ulph_momentum_scratch *scratch, double *drho_dt, double *dv_dt);
 
+/* The force the fluid exerts on every moving boundary particle B (force[B * FSI_DIM + d];
+ * zero for the others), from the state of the last ulph_momentum_rates call: the exact
+ * reaction of the pair terms between B and its fluid neighbours I,
+ *     F_B = - sum_I V_I f_IB,
+ * f_IB the force density on I from B in the momentum equation (pressure, viscous,
+ * artificial viscous). The forces on fluid and boundary therefore balance to round-off
+ * (tests/unit/test_ulph_scheme.c) whatever the pair terms' symmetry. */
+void ulph_boundary_loads(const ulph_operators *ops, const ulph_momentum_params *prm,
+                         const fluid_particles *p, const double *velocity_for_viscosity,
+                         const ulph_momentum_scratch *scratch, double *force);
+
 #endif

@@ -30,7 +30,6 @@ struct fluid_scheme {
     ulph_operators ops;
     ulph_momentum_scratch scratch;
     const unsigned char *free_slip;
-    const double *wall_acceleration;
     double *velocity_for_viscosity, *filtered, *density_gradient;
     double cfl_acoustic, cfl_viscous, cfl_force;
     long filter_interval;
@@ -88,7 +87,6 @@ fluid_scheme *fluid_scheme_create(const fsi_case *c, const char *role,
     s->momentum.rho0 = props->density;
     memcpy(s->momentum.gravity, props->gravity, sizeof s->momentum.gravity);
     s->free_slip = props->free_slip;
-    s->wall_acceleration = props->wall_acceleration;
     s->cfl_acoustic = fsi_case_get_real(c, role, "cfl_acoustic", 0.25);
     s->cfl_viscous = fsi_case_get_real(c, role, "cfl_viscous", 0.125);
     s->cfl_force = fsi_case_get_real(c, role, "cfl_force", 0.25);
@@ -205,12 +203,12 @@ int fluid_scheme_rates(fluid_scheme *s, fluid_particles *p, double *drho_dt, dou
                  "position is not finite, or memory ran out)", p->n);
         return -1;
     }
-    ulph_walls_update(&s->ops, &s->eos, s->momentum.gravity, s->wall_acceleration,
+    ulph_walls_update(&s->ops, &s->eos, s->momentum.gravity,
                       s->free_slip, p, s->velocity_for_viscosity);
     if (s->filter_due) {
         density_filter(s, p);
         fluid_state(s, p);
-        ulph_walls_update(&s->ops, &s->eos, s->momentum.gravity, s->wall_acceleration,
+        ulph_walls_update(&s->ops, &s->eos, s->momentum.gravity,
                           s->free_slip, p, s->velocity_for_viscosity);
         s->filter_due = 0;
     }
@@ -247,6 +245,13 @@ void fluid_scheme_pressure_gradient(const fluid_scheme *s, const fluid_particles
                                     double *grad)
 {
     ulph_gradient_scalar(&s->ops, p->pressure, grad);
+}
+
+void fluid_scheme_boundary_loads(const fluid_scheme *s, const fluid_particles *p,
+                                 double *force)
+{
+    ulph_boundary_loads(&s->ops, &s->momentum, p, s->velocity_for_viscosity, &s->scratch,
+                        force);
 }
 
 int fluid_scheme_write_fields(const fluid_scheme *s, fsi_h5_writer *out)

@@ -5,14 +5,14 @@
 #include <string.h>
 
 void ulph_walls_update(const ulph_operators *ops, const ulph_eos *eos, const double *gravity,
-                       const double *wall_acceleration, const unsigned char *free_slip,
-                       fluid_particles *p, double *velocity_for_viscosity)
+                       const unsigned char *free_slip, fluid_particles *p,
+                       double *velocity_for_viscosity)
 {
     const int n = p->n;
 #pragma omp parallel for schedule(static) if (n >= ULPH_PARALLEL_MIN_PARTICLES)
     for (int s = 0; s < n; s++) {
         double *vv = &velocity_for_viscosity[s * FSI_DIM];
-        if (!(p->flags[s] & FLUID_PARTICLE_WALL)) {
+        if (!(p->flags[s] & (FLUID_PARTICLE_WALL | FLUID_PARTICLE_MOVING_BOUNDARY))) {
             memcpy(vv, &p->v[s * FSI_DIM], FSI_DIM * sizeof *vv);
             continue;
         }
@@ -38,7 +38,7 @@ void ulph_walls_update(const ulph_operators *ops, const ulph_eos *eos, const dou
             /* (g - a_S) of 000 Eq. 52; a_S = 0 for a fixed wall. */
             pressure = sum_pw;
             for (int d = 0; d < FSI_DIM; d++) {
-                const double a_s = wall_acceleration ? wall_acceleration[s * FSI_DIM + d] : 0.0;
+                const double a_s = p->boundary_acceleration[s * FSI_DIM + d];
                 pressure += (gravity[d] - a_s) * head[d];
                 v_mean[d] /= sum_w;
             }
@@ -47,7 +47,7 @@ void ulph_walls_update(const ulph_operators *ops, const ulph_eos *eos, const dou
         p->pressure[s] = pressure = fmax(pressure, 0.0);
         p->density[s] = ulph_eos_density(eos, pressure);
         p->mass[s] = p->density[s] * p->volume[s];
-        if (free_slip && free_slip[s]) {
+        if ((p->flags[s] & FLUID_PARTICLE_WALL) && free_slip && free_slip[s]) {
             double norm = 0.0, vn = 0.0;
             for (int d = 0; d < FSI_DIM; d++)
                 norm += toward[d] * toward[d];

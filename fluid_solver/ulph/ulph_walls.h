@@ -1,6 +1,7 @@
-/* Fixed ghost wall particles (000 §2.3): their pressure, density, mass and the
- * velocity they show the viscous stress, interpolated from the fluid particles in
- * their support at every evaluation of the rates. */
+/* Ghost wall particles (000 §2.3) and moving boundary particles (the solid seen by the
+ * fluid, 000 §3, treated the same way as no-slip walls): their pressure, density, mass
+ * and the velocity they show the viscous stress, interpolated from the fluid particles
+ * in their support at every evaluation of the rates. */
 #ifndef ULPH_WALLS_H
 #define ULPH_WALLS_H
 
@@ -8,18 +9,19 @@
 #include "ulph_eos.h"
 #include "ulph_operators.h"
 
-/* For every wall particle S with fluid neighbours f (weights w_Sf of the last
- * ulph_operators_update):
+/* For every wall or moving boundary particle S with fluid neighbours f (weights w_Sf of
+ * the last ulph_operators_update):
  *   p_S = max(0, (sum_f p_f w_Sf + (g - a_S) . sum_f rho_f (x_S - x_f) w_Sf) / sum_f w_Sf)
  *                                                          (000 Eq. 52)
- * with a_S = wall_acceleration[S * FSI_DIM + d], the prescribed acceleration of a moving
- * wall (fluid_wall_motion.h), or 0 for every wall when wall_acceleration is NULL. In the
+ * with a_S = p->boundary_acceleration of S: a moving wall's prescribed acceleration
+ * (fluid_wall_motion.h), a solid particle's received one (fluid_boundary.h). In the
  * wall's frame the fluid feels g - a_S, so this continues the hydrostatic field of an
  * accelerating tank exactly (tests/unit/test_ulph_scheme.c).
  *   rho_S from the equation of state (000 Eq. 53, ulph_eos.h), m_S = rho_S V0 (Eq. 54)
  *   v~_S = sum_f v_f w_Sf / sum_f w_Sf                     (000 Eq. 51)
  *   velocity_for_viscosity_S = 2 v_S - v~_S                (no-slip, 000 Eq. 50)
- *                            = v~_S - 2 ((v~_S - v_S) . n_S) n_S   (free-slip)
+ *                            = v~_S - 2 ((v~_S - v_S) . n_S) n_S   (free-slip walls,
+ *                                                         free_slip[S], S < its size)
  * with n_S the unit vector from S towards the weighted centre of its fluid neighbours.
  * The bound p_S >= 0 is "a wall pushes, never pulls": a wall cannot hold water by
  * suction, and a negative p_S (a stretched layer over the wall) drew the F1 front
@@ -30,7 +32,7 @@
  * rho = rho0 and v~ = 0. For fluid particles velocity_for_viscosity is their
  * velocity. */
 void ulph_walls_update(const ulph_operators *ops, const ulph_eos *eos, const double *gravity,
-                       const double *wall_acceleration, const unsigned char *free_slip,
-                       fluid_particles *p, double *velocity_for_viscosity);
+                       const unsigned char *free_slip, fluid_particles *p,
+                       double *velocity_for_viscosity);
 
 #endif

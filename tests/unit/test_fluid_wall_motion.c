@@ -67,10 +67,10 @@ int main(void)
                 if (moving)
                     worst = fmax(worst, fabs(p.x[j] - (x_case[j] + s * e)) +
                                             fabs(p.v[j] - v * e) +
-                                            fabs(w.acceleration[j] - a * e));
+                                            fabs(p.boundary_acceleration[j] - a * e));
                 else
                     worst_fixed = fmax(worst_fixed, fabs(p.x[j] - x_case[j]) + fabs(p.v[j]) +
-                                                        fabs(w.acceleration[j]));
+                                                        fabs(p.boundary_acceleration[j]));
             }
         }
     }

@@ -121,7 +121,7 @@ static void test_hydrostatic(void)
     scene_update(&s);
     const ulph_eos e = {rho0, 31.3, 7.0};
     const double gravity[2] = {0.0, -g};
-    ulph_walls_update(&s.ops, &e, gravity, NULL, NULL, p, s.vv);
+    ulph_walls_update(&s.ops, &e, gravity, NULL, p, s.vv);
     double worst_wall = 0.0;
     for (int i = 0; i < p->n; i++)
         if ((p->flags[i] & FLUID_PARTICLE_WALL) && p->pressure[i] != 0.0)
@@ -171,7 +171,7 @@ static void test_hydrostatic(void)
     for (int slip = 0; slip < 2; slip++) {
         for (int i = 0; i < p->n; i++)
             free_slip[i] = (unsigned char)slip;
-        ulph_walls_update(&s.ops, &e, gravity, NULL, free_slip, p, s.vv);
+        ulph_walls_update(&s.ops, &e, gravity, free_slip, p, s.vv);
         double worst_v = 0.0;
         int walls_seen = 0;
         for (int i = 0; i < p->n; i++) {
@@ -200,24 +200,27 @@ static void test_hydrostatic(void)
      * the fluid is at rest under g - a, p = rho0 (g - a) . (x - x_r) with x_r on the
      * surface where it meets the middle of the tank, a linear field, so every wall
      * particle must get it continued exactly (or 0 where the continuation is negative:
-     * walls never pull). */
+     * walls never pull). Every other wall particle is made a moving boundary particle
+     * (the solid seen by the fluid, 000 §3): they must be treated alike. */
     const double a[2] = {2.5, -1.5}, x_r[2] = {0.5 * nx * dx, H};
-    double *wall_acc = calloc((size_t)p->n * 2, sizeof *wall_acc);
+    const int boundary_kind = FLUID_PARTICLE_WALL | FLUID_PARTICLE_MOVING_BOUNDARY;
     for (int i = 0; i < p->n; i++) {
+        if ((p->flags[i] & FLUID_PARTICLE_WALL) && i % 2)
+            p->flags[i] = FLUID_PARTICLE_MOVING_BOUNDARY;
         for (int d = 0; d < 2; d++) {
             p->v[i * 2 + d] = 0.0;
-            if (p->flags[i] & FLUID_PARTICLE_WALL)
-                wall_acc[i * 2 + d] = a[d];
+            if (p->flags[i] & boundary_kind)
+                p->boundary_acceleration[i * 2 + d] = a[d];
         }
         if (p->flags[i] & FLUID_PARTICLE_FLUID)
             p->pressure[i] = rho0 * ((gravity[0] - a[0]) * (p->x[i * 2] - x_r[0]) +
                                      (gravity[1] - a[1]) * (p->x[i * 2 + 1] - x_r[1]));
     }
-    ulph_walls_update(&s.ops, &e, gravity, wall_acc, NULL, p, s.vv);
+    ulph_walls_update(&s.ops, &e, gravity, NULL, p, s.vv);
     double worst_acc = 0.0;
     int loaded = 0;
     for (int i = 0; i < p->n; i++) {
-        if (!(p->flags[i] & FLUID_PARTICLE_WALL) || p->pressure[i] == 0.0)
+        if (!(p->flags[i] & boundary_kind) || p->pressure[i] == 0.0)
             continue;
         const double expected = rho0 * ((gravity[0] - a[0]) * (p->x[i * 2] - x_r[0]) +
                                         (gravity[1] - a[1]) * (p->x[i * 2 + 1] - x_r[1]));
@@ -229,7 +232,6 @@ static void test_hydrostatic(void)
     CHECK(loaded > 0 && worst_acc < 1e-9 * rho0 * g * H,
           "accelerating tank: wall pressure not rho0 (g - a) . (x_S - x_r): off by %g Pa",
           worst_acc);
-    free(wall_acc);
     scene_free(&s);
 }
 #endif
@@ -287,6 +289,52 @@ static void test_momentum_conservation(void)
     scene_free(&s);
 }
 
+/* The loads on moving boundary particles are the exact reaction of the fluid's pair
+ * forces: with the bottom quarter of a jittered block made boundary particles (random
+ * velocities, pressures of both signs, both viscous operators, no artificial viscosity,
+ * whose fluid-fluid pairs are not antisymmetric), sum_fluid m (a - g) + sum_B F_B = 0
+ * to round-off (1e-12 of the sum of magnitudes). */
+static void test_boundary_loads(void)
+{
+    scene s;
+    jittered_block(&s, 16);
+    fluid_particles *p = &s.p;
+    for (int i = 0; i < p->n; i++) {
+        p->pressure[i] = 1e4 * (uniform() - 0.3);
+        for (int d = 0; d < FSI_DIM; d++)
+            p->v[i * FSI_DIM + d] = 2 * uniform() - 1;
+        if (p->x[i * FSI_DIM + 1] < 0.25)
+            p->flags[i] = FLUID_PARTICLE_MOVING_BOUNDARY;
+    }
+    memcpy(s.vv, p->v, (size_t)p->n * FSI_DIM * sizeof(double));
+    scene_update(&s);
+    double *loads = calloc((size_t)p->n * FSI_DIM, sizeof *loads);
+    for (int laplacian = 0; laplacian < 2; laplacian++) {
+        ulph_momentum_params prm = {0.1, 0.0, s.k.h, 30.0, 1000.0, {0.0, -9.81}, laplacian};
+        ulph_momentum_rates(&s.ops, &prm, p, s.vv, &s.scratch, s.drho, s.acc);
+        ulph_boundary_loads(&s.ops, &prm, p, s.vv, &s.scratch, loads);
+        double total[FSI_DIM] = {0}, on_boundary[FSI_DIM] = {0}, scale = 0.0;
+        for (int i = 0; i < p->n; i++)
+            for (int d = 0; d < FSI_DIM; d++) {
+                double f = 0.0;
+                if (p->flags[i] & FLUID_PARTICLE_FLUID)
+                    f = p->mass[i] * (s.acc[i * FSI_DIM + d] - prm.gravity[d]);
+                else
+                    on_boundary[d] += f = loads[i * FSI_DIM + d];
+                total[d] += f;
+                scale += fabs(f);
+            }
+        printf("boundary loads (viscous %s): |sum F| / sum |F| = %.3g, load on the boundary "
+               "(%.4g, %.4g)\n", laplacian ? "laplacian" : "stress",
+               fsi_vec_norm(total) / scale, on_boundary[0], on_boundary[1]);
+        CHECK(fsi_vec_norm(on_boundary) > 1e-3 * scale, "no load on the boundary");
+        CHECK(fsi_vec_norm(total) < 1e-12 * scale, "fluid and boundary forces do not balance: "
+              "%g of %g", fsi_vec_norm(total), scale);
+    }
+    free(loads);
+    scene_free(&s);
+}
+
 static void test_continuity(void)
 {
     scene s;
@@ -315,6 +363,9 @@ int main(void)
     test_hydrostatic();
 #endif
     test_momentum_conservation();
+#if FSI_DIM == 2
+    test_boundary_loads();
+#endif
     test_continuity();
     return unit_check_report("test_ulph_scheme");
 }
