@@ -484,9 +484,10 @@ static int check_health(fluid_run *s, double t, int window)
                         ? INFINITY
                         : fmax(s->kinetic0 + s->compression0 + released + s->wall_work, 0.0);
     if (!isfinite(kinetic) || kinetic > s->energy_limit * budget + s->energy_floor) {
-        /* Walls move slower than an unstable fluid: the fastest particle is a fluid one. */
+        /* Walls move slower than an unstable fluid: the fastest of the case's particles
+         * (not the solid's, at the tail) is a fluid one. */
         double speed;
-        const int fastest = fsi_fastest(p->v, p->n, &speed);
+        const int fastest = fsi_fastest(p->v, s->n_fixed, &speed);
         char at[128];
         snprintf(s->msg, sizeof s->msg,
                  "kinetic energy grew to %.6g J, more than "
