@@ -22,6 +22,13 @@
 #include "ulph_operators.h"
 #include "ulph_walls.h"
 
+/* The phases of one evaluation, timed separately (fluid_scheme_use_timers). */
+enum { PHASE_SEARCH, PHASE_OPERATORS, PHASE_STATE, PHASE_WALLS, PHASE_FILTER, PHASE_MOMENTUM,
+       N_PHASES };
+static const char *const phase_name[N_PHASES] = {
+    "rates: neighbour search", "rates: operators", "rates: equation of state",
+    "rates: walls", "rates: density filter", "rates: momentum"};
+
 struct fluid_scheme {
     ulph_kernel kernel;
     ulph_eos eos;
@@ -35,7 +42,28 @@ struct fluid_scheme {
     long filter_interval;
     int filter_due;
     int tension;
+    fsi_timers *timers;         /* NULL: not timed */
+    int phase[N_PHASES];        /* their indices in timers */
 };
+
+void fluid_scheme_use_timers(fluid_scheme *s, fsi_timers *t)
+{
+    s->timers = t;
+    for (int k = 0; t && k < N_PHASES; k++)
+        s->phase[k] = fsi_timer_index(t, phase_name[k]);
+}
+
+static void phase_start(fluid_scheme *s, int phase)
+{
+    if (s->timers)
+        fsi_timer_start(s->timers, s->phase[phase]);
+}
+
+static void phase_stop(fluid_scheme *s, int phase)
+{
+    if (s->timers)
+        fsi_timer_stop(s->timers, s->phase[phase]);
+}
 
 fluid_scheme *fluid_scheme_create(const fsi_case *c, const char *role,
                                   const fluid_properties *props, const fluid_particles *p,
@@ -170,24 +198,37 @@ static void density_filter(fluid_scheme *s, fluid_particles *p)
 int fluid_scheme_rates(fluid_scheme *s, fluid_particles *p, double *drho_dt, double *dv_dt,
                        char *msg, size_t msg_size)
 {
+    phase_start(s, PHASE_STATE);
     fluid_state(s, p);
-    if (fsi_grid_build(&s->grid, p->x, p->n, s->kernel.support) != 0 ||
-        ulph_operators_update(&s->ops, &s->kernel, &s->grid, p) != 0) {
+    phase_stop(s, PHASE_STATE);
+    phase_start(s, PHASE_SEARCH);
+    int rc = fsi_grid_build(&s->grid, p->x, p->n, s->kernel.support);
+    phase_stop(s, PHASE_SEARCH);
+    phase_start(s, PHASE_OPERATORS);
+    rc = rc != 0 ? rc : ulph_operators_update(&s->ops, &s->kernel, &s->grid, p);
+    phase_stop(s, PHASE_OPERATORS);
+    if (rc != 0) {
         snprintf(msg, msg_size, "cannot build the neighbour lists of %d particles (a "
                  "position is not finite, or memory ran out)", p->n);
         return -1;
     }
+    phase_start(s, PHASE_WALLS);
     ulph_walls_update(&s->ops, &s->eos, s->momentum.gravity, s->free_slip, p,
                       s->velocity_for_viscosity);
+    phase_stop(s, PHASE_WALLS);
     if (s->filter_due) {
+        phase_start(s, PHASE_FILTER);
         density_filter(s, p);
         fluid_state(s, p);
         ulph_walls_update(&s->ops, &s->eos, s->momentum.gravity, s->free_slip, p,
                           s->velocity_for_viscosity);
         s->filter_due = 0;
+        phase_stop(s, PHASE_FILTER);
     }
+    phase_start(s, PHASE_MOMENTUM);
     ulph_momentum_rates(&s->ops, &s->momentum, p, s->velocity_for_viscosity, &s->scratch,
                         drho_dt, dv_dt);
+    phase_stop(s, PHASE_MOMENTUM);
     return 0;
 }
 
