@@ -60,6 +60,7 @@
 #include "neighbour_grid.h"
 #include "small_tensor.h"
 #include "ulph_kernel.h"
+#include "ulph_verlet.h"
 
 /* Default bound on the Frobenius condition number |M| |M^-1| of a usable shape
  * tensor (ulph_operators.max_condition; at least FSI_DIM for any M). It is not about
@@ -80,6 +81,7 @@
 /* Per-particle flags (ulph_operators.flags). */
 enum {
     ULPH_SINGULAR_SHAPE = 1,    /* M^-1 unusable: M^-1 = 0, gradients zero (the rule above) */
+    ULPH_IDLE_WALL = 2,         /* an idle wall (ulph_verlet.h): empty row, M = M^-1 = 0 */
 };
 
 /* Read-only for callers (except max_condition, which may be set before an update). */
@@ -111,6 +113,14 @@ void ulph_operators_free(ulph_operators *ops);
  * hold p->n points or memory runs out (ops is then empty). */
 int ulph_operators_update(ulph_operators *ops, const ulph_kernel *k,
                           const fsi_neighbour_grid *grid, const fluid_particles *p);
+
+/* The same from candidate lists built (or kept, ulph_verlet_update) for p, with every
+ * pair now within the support among them: rows hold the candidates within the support
+ * in the candidates' order; an idle wall's row is empty and flagged ULPH_IDLE_WALL
+ * (not counted in n_singular). ulph_operators_update is this with candidates from the
+ * grid at the support itself and no idle walls. */
+int ulph_operators_update_list(ulph_operators *ops, const ulph_kernel *k,
+                               const ulph_verlet *list, const fluid_particles *p);
 
 /* grad f (000 Eq. 13) of the scalar field f[n]: grad[i * FSI_DIM + a] = df/dx_a. */
 void ulph_gradient_scalar(const ulph_operators *ops, const double *f, double *grad);

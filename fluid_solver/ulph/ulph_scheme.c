@@ -1,7 +1,7 @@
 /* The ULPH scheme behind fluid_scheme.h (000 §2.1, §2.3): one evaluation of the rates
  * is
- *   1. neighbour grid and lists, shape tensors M and M^-1 at the current positions
- *      with V = m / rho (ulph_operators);
+ *   1. neighbour lists (from candidate lists with a skin, ulph_verlet), shape tensors
+ *      M and M^-1 at the current positions with V = m / rho (ulph_operators);
  *   2. pressure of every fluid particle from its density (Tait, 000 Eq. 6);
  *   3. wall particles from the fluid around them (000 Eqs. 50-54, ulph_walls);
  *   4. when a density filter is due (every density_filter_interval steps, 000 Eq. 24
@@ -33,7 +33,8 @@ struct fluid_scheme {
     ulph_kernel kernel;
     ulph_eos eos;
     ulph_momentum_params momentum;
-    fsi_neighbour_grid grid;
+    ulph_verlet list;
+    double skin;                /* of the candidate lists [m] */
     ulph_operators ops;
     ulph_momentum_scratch scratch;
     const unsigned char *free_slip;
@@ -95,7 +96,8 @@ fluid_scheme *fluid_scheme_create(const fsi_case *c, const char *role,
     s->cfl_force = fsi_case_get_real(c, role, "cfl_force", 0.25);
     s->filter_interval = fsi_case_get_int(c, role, "density_filter_interval", 20);
     s->tension = fsi_case_get_bool(c, role, "tension", 0);
-    fsi_grid_init(&s->grid);
+    s->skin = fsi_case_get_real(c, role, "neighbour_skin", ULPH_VERLET_SKIN) * s->kernel.support;
+    ulph_verlet_init(&s->list);
     ulph_operators_init(&s->ops);
     const size_t n = (size_t)(p->n > 0 ? p->n : 1);
     s->velocity_for_viscosity = malloc(n * FSI_DIM * sizeof(double));
@@ -114,7 +116,7 @@ void fluid_scheme_free(fluid_scheme *s)
 {
     if (!s)
         return;
-    fsi_grid_free(&s->grid);
+    ulph_verlet_free(&s->list);
     ulph_operators_free(&s->ops);
     ulph_momentum_free(&s->scratch);
     free(s->velocity_for_viscosity);
@@ -202,10 +204,10 @@ int fluid_scheme_rates(fluid_scheme *s, fluid_particles *p, double *drho_dt, dou
     fluid_state(s, p);
     phase_stop(s, PHASE_STATE);
     phase_start(s, PHASE_SEARCH);
-    int rc = fsi_grid_build(&s->grid, p->x, p->n, s->kernel.support);
+    int rc = ulph_verlet_update(&s->list, p, s->kernel.support, s->skin) < 0 ? -1 : 0;
     phase_stop(s, PHASE_SEARCH);
     phase_start(s, PHASE_OPERATORS);
-    rc = rc != 0 ? rc : ulph_operators_update(&s->ops, &s->kernel, &s->grid, p);
+    rc = rc != 0 ? rc : ulph_operators_update_list(&s->ops, &s->kernel, &s->list, p);
     phase_stop(s, PHASE_OPERATORS);
     if (rc != 0) {
         snprintf(msg, msg_size, "cannot build the neighbour lists of %d particles (a "
@@ -269,7 +271,7 @@ int fluid_scheme_write_fields(const fluid_scheme *s, fsi_h5_writer *out)
     if (!flags)
         return -1;
     for (int i = 0; i < n; i++)
-        flags[i] = s->ops.flags[i];
+        flags[i] = s->ops.flags[i] & ULPH_SINGULAR_SHAPE;
     int rc = fsi_h5_write_field_int(out, "singular_shape", flags, 1);
     free(flags);
     return rc;
