@@ -21,6 +21,8 @@
 
 #include <math.h>
 
+#include "ulph_exp.h"
+
 /* The seed paper's choices (000 §2.1.3, after Eq. 17): h = 1.2 dx, delta = 3 h. */
 #define ULPH_KERNEL_H_OVER_DX 1.2
 #define ULPH_KERNEL_SUPPORT_FACTOR 3.0
@@ -50,7 +52,7 @@ static inline double ulph_kernel_w2(const ulph_kernel *k, double r2)
 {
     if (!(r2 < k->support2))
         return 0.0;
-    const double w = exp(-r2 * k->inv_h2) - k->shift;
+    const double w = ulph_exp_neg(r2 * k->inv_h2) - k->shift;
     return w > 0.0 ? k->alpha * w : 0.0;
 }
 

@@ -119,6 +119,9 @@ static int fill_row(ulph_operators *ops, const ulph_kernel *k, const ulph_verlet
     fsi_mat_zero(m);
     int informative = 0; /* neighbours that add to M: w V_J > 0 at a non-zero distance */
 
+    /* The neighbours within the support, compacted in the candidates' order, with x_IJ
+     * in g and r^2 in w for now; then the kernel values in a loop of their own (no
+     * call, no gather: the compiler can unroll and vectorise it), then M. */
     int64_t e = first;
     for (int64_t c = list->offset[i]; c < list->offset[i + 1]; c++) {
         const int j = list->candidate[c];
@@ -129,17 +132,24 @@ static int fill_row(ulph_operators *ops, const ulph_kernel *k, const ulph_verlet
         }
         if (!(r2 < k->support2))
             continue;
-        const double w = ulph_kernel_w2(k, r2);
-        const double wv = w * volume[j];
         for (int d = 0; d < FSI_DIM; d++)
             ops->g[e * FSI_DIM + d] = rel[d]; /* x_IJ for now, g_IJ below */
         ops->neighbour[e] = j;
-        ops->w[e] = w;
-        fsi_mat_add_outer(m, wv, rel, rel);     /* 000 Eq. 15 */
-        informative += wv > 0.0 && r2 > 0.0;
+        ops->w[e] = r2;
         e++;
     }
     const int64_t end = e; /* == offset[i + 1]: pass 1 saw the same neighbours */
+    for (int64_t q = first; q < end; q++)
+        ops->w[q] = ulph_kernel_w2(k, ops->w[q]);
+    for (int64_t q = first; q < end; q++) {
+        const double *rel = ops->g + q * FSI_DIM;
+        const double wv = ops->w[q] * volume[ops->neighbour[q]];
+        double r2 = 0.0;
+        for (int d = 0; d < FSI_DIM; d++)
+            r2 += rel[d] * rel[d];
+        fsi_mat_add_outer(m, wv, rel, rel);     /* 000 Eq. 15 */
+        informative += wv > 0.0 && r2 > 0.0;
+    }
 
     /* Exactly symmetric (w V x_a x_b and w V x_b x_a round differently); the adjugate
      * inverse of a symmetric matrix is then exactly symmetric too. */
