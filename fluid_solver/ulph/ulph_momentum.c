@@ -73,6 +73,7 @@ void ulph_momentum_rates(const ulph_operators *ops, const ulph_momentum_params *
         drho_dt[i] = -p->density[i] * scratch->divergence[i];
         double force[FSI_DIM] = {0};
         const double *Ai = &A[(size_t)i * FSI_MAT_SIZE];
+        const double p_negative = p->pressure[i] < 0.0 ? p->pressure[i] : 0.0;
         for (int64_t k = ops->offset[i]; k < ops->offset[i + 1]; k++) {
             const int j = ops->neighbour[k];
             const double *Aj = &A[(size_t)j * FSI_MAT_SIZE];
@@ -88,11 +89,14 @@ void ulph_momentum_rates(const ulph_operators *ops, const ulph_momentum_params *
             fsi_mat_vec(sum, xij, f);
             const double wv = ops->w[k] * p->volume[j];
             /* g_IJ = w V_J M_I^-1 x_IJ (ulph_operators.h): 000 Eq. 26 per pair. */
-            const double pi_ij = vx < 0.0 ? av * vx / (r2 + eps2) : 0.0;
+            /* min(vx, 0) rather than a branch around the division: the sign of vx is a
+             * coin toss per pair (a mispredicted branch each time), and
+             * av * 0 / (r2 + eps2) is 0 too. */
+            const double approach = vx < 0.0 ? vx : 0.0;
+            const double pi_ij = av * approach / (r2 + eps2);
             /* A wall pushes, never pulls: with p_I < 0 the pair's -p_I M_I^-1 term
              * would draw I into the wall, so p_I counts as 0 against a wall. */
-            const double tension = p->pressure[i] < 0.0 && !(p->flags[j] & FLUID_PARTICLE_FLUID)
-                                       ? p->pressure[i] : 0.0;
+            const double tension = p->flags[j] & FLUID_PARTICLE_FLUID ? 0.0 : p_negative;
             for (int d = 0; d < FSI_DIM; d++)
                 force[d] += wv * f[d] + (pi_ij + tension) * ops->g[k * FSI_DIM + d];
         }
