@@ -6,8 +6,8 @@
 # threads, RUNS runs each, the first END seconds of the collapse (defaults: 0.005 s =
 # 1663 steps at a / 57, 0.001 s = 665 steps at a / 114; cfl_acoustic = 0.1, c0 = 40 m/s).
 #
-#   bench/fluid_performance.sh [OUT] [--runs N] [--threads "1 2"] [--end57 T] [--end114 T]
-#                              [--set k=v ...]
+#   bench/fluid_performance.sh [OUT] [--runs=N] [--threads="1 2"] [--end57=T] [--end114=T]
+#                              [--set=k=v ...]
 #
 # Writes OUT/fluid_performance.md: particles, steps, the median particle-steps/s (each
 # fluid.log's "performance:" line: fluid particles x steps / (rates + integration)
@@ -20,43 +20,26 @@ ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 BUILD="${FSI_BUILD:-$ROOT/build}"
 RUN="$BUILD/bin/fsi-run"
 PY=/usr/bin/python3
-CASE="$ROOT/cases/f1_dam_break.ini"
 OUT="$ROOT/out/bench/fluid_performance"
 RUNS=3
 THREADS="1 2"
 END57=0.005
 END114=0.001
 EXTRA=()
-while [ $# -gt 0 ]; do
-  case "$1" in
-    --runs) RUNS="$2"; shift ;;
-    --threads) THREADS="$2"; shift ;;
-    --end57) END57="$2"; shift ;;
-    --end114) END114="$2"; shift ;;
-    --set) EXTRA+=(--set "$2"); shift ;;
-    -*) echo "fluid_performance: unknown option $1" >&2; exit 2 ;;
-    *) OUT="$1" ;;
+for arg in "$@"; do
+  case "$arg" in
+    --runs=*) RUNS="${arg#*=}" ;;
+    --threads=*) THREADS="${arg#*=}" ;;
+    --end57=*) END57="${arg#*=}" ;;
+    --end114=*) END114="${arg#*=}" ;;
+    --set=*) EXTRA+=(--set "${arg#*=}") ;;
+    -*) echo "fluid_performance: unknown option $arg" >&2; exit 2 ;;
+    *) OUT="$arg" ;;
   esac
-  shift
 done
 mkdir -p "$OUT"
 log() { echo "[fluid_performance] $*" >&2; }
-A=0.05715
-calc() { "$PY" -c "print($1)"; }
-
-# One run: N (a / dx), end time, threads, folder.
-run_f1() {
-  local n="$1" end="$2" threads="$3" dir="$4"
-  local w xr
-  w=$(calc "4 * $A / $n")
-  xr=$(calc "16 * $A")
-  "$RUN" "$CASE" --out "$dir" --force --threads "$threads" \
-    --set "fluid.spacing=$(calc "$A / $n")" --set "run.end_time=$end" \
-    --set "fluid.wall bottom.min=-$w,-$w" --set "fluid.wall bottom.max=$(calc "$xr + $w"),0" \
-    --set "fluid.wall left.min=-$w,0" \
-    --set "fluid.wall right.max=$(calc "$xr + $w"),$(calc "4 * $A")" \
-    "${EXTRA[@]}" > "$dir.txt" 2>&1 || { log "run $dir failed, see $dir.txt"; return 1; }
-}
+. "$ROOT/bench/f1_run.sh"
 
 # Runs are interleaved (run 1 of every configuration, then run 2, ...) so that a change
 # in the machine's load spreads over all of them.
@@ -65,7 +48,8 @@ for r in $(seq 1 "$RUNS"); do
     end=$END57; [ "$n" = 114 ] && end=$END114
     for t in $THREADS; do
       log "a / $n, $t thread(s), run $r ..."
-      run_f1 "$n" "$end" "$t" "$OUT/n${n}_t${t}_r$r"
+      f1_run "$RUN" "$n" "$t" "$OUT/n${n}_t${t}_r$r" --set "run.end_time=$end" "${EXTRA[@]}" ||
+        log "run failed, see $OUT/n${n}_t${t}_r$r.txt"
     done
   done
 done

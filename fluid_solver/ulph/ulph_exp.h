@@ -44,14 +44,13 @@ static const double ulph_exp2_table[64] = {
     0x1.fa7c1819e90d8p+0,
 };
 
-static inline double ulph_exp_neg(double t)
+/* exp(-t) for 0 <= t <= 700, without a check (a loop of them can be vectorised). */
+static inline double ulph_exp_neg_unchecked(double t)
 {
     const double inv_step = 92.33248261689366;       /* 64 / ln 2 */
     const double step_hi = 0.01083042469326756;      /* ln 2 / 64, 32 bits */
     const double step_lo = 2.9815858269852933e-12;   /* ln 2 / 64 - step_hi */
     const double shifter = 6755399441055744.0;       /* 1.5 2^52: rounds to an integer */
-    if (!(t <= 700.0))
-        return t > 700.0 ? 0.0 : t; /* far beyond any support; NaN stays NaN */
     const double shifted = -t * inv_step + shifter;
     const double n = shifted - shifter;
     int64_t bits;
@@ -65,6 +64,14 @@ static inline double ulph_exp_neg(double t)
     double scale;
     memcpy(&scale, &scale_bits, sizeof scale);
     return scale * (ulph_exp2_table[j] * p);
+}
+
+/* exp(-t) for any t >= 0: 0 beyond 700 (far beyond any support), NaN for NaN. */
+static inline double ulph_exp_neg(double t)
+{
+    if (!(t <= 700.0))
+        return t > 700.0 ? 0.0 : t;
+    return ulph_exp_neg_unchecked(t);
 }
 
 #endif

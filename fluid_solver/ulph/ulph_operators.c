@@ -139,8 +139,7 @@ static int fill_row(ulph_operators *ops, const ulph_kernel *k, const ulph_verlet
         e++;
     }
     const int64_t end = e; /* == offset[i + 1]: pass 1 saw the same neighbours */
-    for (int64_t q = first; q < end; q++)
-        ops->w[q] = ulph_kernel_w2(k, ops->w[q]);
+    ulph_kernel_w2_row(k, ops->w + first, end - first);
     for (int64_t q = first; q < end; q++) {
         const double *rel = ops->g + q * FSI_DIM;
         const double wv = ops->w[q] * volume[ops->neighbour[q]];
