@@ -55,14 +55,14 @@ void ulph_momentum_rates(const ulph_operators *ops, const ulph_momentum_params *
     ulph_gradient_vector(ops, velocity_for_viscosity, L);
     /* Continuity sees the walls' own velocity (no penetration), not the virtual one. */
     ulph_divergence(ops, p->v, scratch->divergence);
-#pragma omp parallel for schedule(static) if (n >= ULPH_PARALLEL_MIN_PARTICLES)
+#pragma omp parallel for schedule(dynamic, ULPH_CHUNK) if (n >= ULPH_PARALLEL_MIN_PARTICLES)
     for (int i = 0; i < n; i++)
         stress_shape(ops, p, prm->viscosity, &L[(size_t)i * FSI_MAT_SIZE], i,
                      &A[(size_t)i * FSI_MAT_SIZE]);
 
     const double av = prm->artificial_viscosity * prm->h * prm->c0 * prm->rho0;
     const double eps2 = 0.01 * prm->h * prm->h;
-#pragma omp parallel for schedule(static) if (n >= ULPH_PARALLEL_MIN_PARTICLES)
+#pragma omp parallel for schedule(dynamic, ULPH_CHUNK) if (n >= ULPH_PARALLEL_MIN_PARTICLES)
     for (int i = 0; i < n; i++) {
         double *a_i = &dv_dt[i * FSI_DIM];
         if (!(p->flags[i] & FLUID_PARTICLE_FLUID)) {

@@ -193,7 +193,7 @@ int ulph_operators_update_list(ulph_operators *ops, const ulph_kernel *k,
     const int parallel = n >= ULPH_PARALLEL_MIN_PARTICLES;
     int64_t *offset = ops->offset;
     offset[0] = 0;
-#pragma omp parallel for schedule(static) if (parallel)
+#pragma omp parallel for schedule(dynamic, ULPH_CHUNK) if (parallel)
     for (int i = 0; i < n; i++)
         offset[i + 1] = row_length(k, list, p->x, i);
     for (int i = 0; i < n; i++)
@@ -203,7 +203,7 @@ int ulph_operators_update_list(ulph_operators *ops, const ulph_kernel *k,
         return -1;
     }
     int n_singular = 0;
-#pragma omp parallel for schedule(static) if (parallel) reduction(+ : n_singular)
+#pragma omp parallel for schedule(dynamic, ULPH_CHUNK) if (parallel) reduction(+ : n_singular)
     for (int i = 0; i < n; i++)
         n_singular += fill_row(ops, k, list, p, i);
     ops->n = n;
@@ -229,7 +229,7 @@ int ulph_operators_update(ulph_operators *ops, const ulph_kernel *k,
 void ulph_gradient_scalar(const ulph_operators *ops, const double *f, double *grad)
 {
     const int n = ops->n;
-#pragma omp parallel for schedule(static) if (n >= ULPH_PARALLEL_MIN_PARTICLES)
+#pragma omp parallel for schedule(dynamic, ULPH_CHUNK) if (n >= ULPH_PARALLEL_MIN_PARTICLES)
     for (int i = 0; i < n; i++) {
         double s[FSI_DIM] = {0};
         if (!(ops->flags[i] & ULPH_SINGULAR_SHAPE)) {
@@ -249,7 +249,7 @@ void ulph_gradient_scalar(const ulph_operators *ops, const double *f, double *gr
 void ulph_gradient_vector(const ulph_operators *ops, const double *u, double *grad)
 {
     const int n = ops->n;
-#pragma omp parallel for schedule(static) if (n >= ULPH_PARALLEL_MIN_PARTICLES)
+#pragma omp parallel for schedule(dynamic, ULPH_CHUNK) if (n >= ULPH_PARALLEL_MIN_PARTICLES)
     for (int i = 0; i < n; i++) {
         double s[FSI_MAT_SIZE] = {0};
         if (!(ops->flags[i] & ULPH_SINGULAR_SHAPE)) {
@@ -269,7 +269,7 @@ void ulph_gradient_vector(const ulph_operators *ops, const double *u, double *gr
 void ulph_divergence(const ulph_operators *ops, const double *u, double *div)
 {
     const int n = ops->n;
-#pragma omp parallel for schedule(static) if (n >= ULPH_PARALLEL_MIN_PARTICLES)
+#pragma omp parallel for schedule(dynamic, ULPH_CHUNK) if (n >= ULPH_PARALLEL_MIN_PARTICLES)
     for (int i = 0; i < n; i++) {
         double s = 0.0;
         if (!(ops->flags[i] & ULPH_SINGULAR_SHAPE)) {

@@ -78,6 +78,14 @@
  * work; the results are the same either way). */
 #define ULPH_PARALLEL_MIN_PARTICLES 128
 
+/* Particles per chunk of the parallel loops, handed out dynamically. The work per
+ * particle is far from even: fluid particles come first, wall particles last, and
+ * idle walls (ulph_verlet.h) and most walls' loops do almost nothing, so a static split
+ * in halves left one thread with nearly all of it; chunks also let a thread that keeps
+ * its core take over from one that lost it to another job. Every particle's results
+ * are computed alone, so they do not depend on which thread takes it. */
+#define ULPH_CHUNK 64
+
 /* Per-particle flags (ulph_operators.flags). */
 enum {
     ULPH_SINGULAR_SHAPE = 1,    /* M^-1 unusable: M^-1 = 0, gradients zero (the rule above) */

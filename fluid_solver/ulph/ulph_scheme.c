@@ -143,7 +143,7 @@ double fluid_scheme_smoothing_length(const fluid_scheme *s)
 static void fluid_state(const fluid_scheme *s, fluid_particles *p)
 {
     const int n = p->n;
-#pragma omp parallel for schedule(static) if (n >= ULPH_PARALLEL_MIN_PARTICLES)
+#pragma omp parallel for schedule(dynamic, ULPH_CHUNK) if (n >= ULPH_PARALLEL_MIN_PARTICLES)
     for (int i = 0; i < n; i++)
         if (p->flags[i] & FLUID_PARTICLE_FLUID) {
             /* Without tension, p >= 0 (docs/ulph.md "Tension"): a stretched front
@@ -174,7 +174,7 @@ static void density_filter(fluid_scheme *s, fluid_particles *p)
     const ulph_operators *ops = &s->ops;
     const double w0 = ulph_kernel_w2(&s->kernel, 0.0);
     ulph_gradient_scalar(ops, p->density, s->density_gradient);
-#pragma omp parallel for schedule(static) if (n >= ULPH_PARALLEL_MIN_PARTICLES)
+#pragma omp parallel for schedule(dynamic, ULPH_CHUNK) if (n >= ULPH_PARALLEL_MIN_PARTICLES)
     for (int i = 0; i < n; i++) {
         s->filtered[i] = p->density[i];
         if (!(p->flags[i] & FLUID_PARTICLE_FLUID))

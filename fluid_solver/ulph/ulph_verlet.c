@@ -89,14 +89,14 @@ int ulph_verlet_build(ulph_verlet *v, const fsi_neighbour_grid *grid, const flui
     const int parallel = n >= ULPH_PARALLEL_MIN_PARTICLES;
     int64_t *offset = v->offset;
     offset[0] = 0;
-#pragma omp parallel for schedule(static) if (parallel)
+#pragma omp parallel for schedule(dynamic, ULPH_CHUNK) if (parallel)
     for (int i = 0; i < n; i++)
         offset[i + 1] = row_length(v, grid, p, i, prune_idle_walls);
     for (int i = 0; i < n; i++)
         offset[i + 1] += offset[i];
     if (reserve(v, n, offset[n]) != 0)
         return -1;
-#pragma omp parallel for schedule(static) if (parallel)
+#pragma omp parallel for schedule(dynamic, ULPH_CHUNK) if (parallel)
     for (int i = 0; i < n; i++)
         fill_row(v, grid, p, i);
     for (int64_t k = 0; k < (int64_t)n * FSI_DIM; k++)
@@ -114,7 +114,7 @@ static int still_valid(const ulph_verlet *v, const fluid_particles *p)
     const int n = p->n;
     const double limit2 = 0.999 * 0.25 * v->skin * v->skin;
     double largest = 0.0;
-#pragma omp parallel for schedule(static) if (n >= ULPH_PARALLEL_MIN_PARTICLES) \
+#pragma omp parallel for schedule(dynamic, ULPH_CHUNK) if (n >= ULPH_PARALLEL_MIN_PARTICLES) \
     reduction(max : largest)
     for (int i = 0; i < n; i++) {
         double d2 = 0.0;
