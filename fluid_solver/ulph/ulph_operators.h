@@ -26,7 +26,7 @@
  * they add nothing), stored as I -> J in I's row and J -> I in J's row, in the grid's
  * deterministic order. Per pair it keeps J, w(x_IJ) and the vector g_IJ = w V_J M_I^-1 x_IJ, so
  * each operator is one gather, sum_J A(f) g_IJ. Both passes of the build and every
- * operator are parallel over particles (OpenMP, static schedule) and each particle
+ * operator are parallel over particles (OpenMP, dynamic chunks) and each particle
  * writes only its own row and outputs, in a fixed order: the results are the same
  * bit for bit with any number of threads. Nothing is allocated unless the particle
  * or pair count grows beyond an earlier update's.
