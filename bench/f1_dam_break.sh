@@ -36,7 +36,7 @@ while [ $# -gt 0 ]; do
 done
 mkdir -p "$OUT"
 log() { echo "[f1_dam_break] $*" >&2; }
-. "$ROOT/bench/f1_run.sh"
+. "$ROOT/bench/f1_run.bash"
 A=$F1_A
 calc() { f1_calc "$1"; }
 

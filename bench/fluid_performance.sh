@@ -39,7 +39,7 @@ for arg in "$@"; do
 done
 mkdir -p "$OUT"
 log() { echo "[fluid_performance] $*" >&2; }
-. "$ROOT/bench/f1_run.sh"
+. "$ROOT/bench/f1_run.bash"
 
 # Runs are interleaved (run 1 of every configuration, then run 2, ...) so that a change
 # in the machine's load spreads over all of them.

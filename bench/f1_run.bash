@@ -1,4 +1,5 @@
-# Sourced by the F1 benchmarks (f1_dam_break.sh, fluid_performance.sh): one run of
+# Sourced (not a benchmark of its own, hence not .sh: `fsi bench` lists bench/*.sh) by
+# the F1 benchmarks (f1_dam_break.sh, fluid_performance.sh): one run of
 # cases/f1_dam_break.ini at dx = a / N with the walls four layers thick and the tank
 # 16 a long, every length scaled with the spacing.
 #
