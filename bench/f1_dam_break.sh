@@ -17,7 +17,6 @@ set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 RUN="$ROOT/build/bin/fsi-run"
 PY=/usr/bin/python3
-CASE="$ROOT/cases/f1_dam_break.ini"
 OUT="$ROOT/out/bench/f1_dam_break"
 NS="15 20 30"
 RESUME=0
@@ -37,8 +36,9 @@ while [ $# -gt 0 ]; do
 done
 mkdir -p "$OUT"
 log() { echo "[f1_dam_break] $*" >&2; }
-A=0.05715          # column width a (m); the case's lengths are multiples of a
-calc() { "$PY" -c "print($1)"; }
+. "$ROOT/bench/f1_run.bash"
+A=$F1_A
+calc() { f1_calc "$1"; }
 
 DIRS=()
 for n in $NS; do
@@ -49,18 +49,10 @@ for n in $NS; do
     log "$name: kept from an earlier run"
     continue
   fi
-  dx=$(calc "$A / $n")
-  w=$(calc "4 * $A / $n")               # walls four layers thick
-  xr=$(calc "16 * $A")                  # tank 16 a long
-  log "$name: dx = a / $n = $dx m ..."
+  log "$name: dx = a / $n = $(calc "$A / $n") m ..."
   start=$(date +%s.%N)
   set +e
-  "$RUN" "$CASE" --out "$OUT/$name" --force --threads "$THREADS" \
-    --set "fluid.spacing=$dx" \
-    --set "fluid.wall bottom.min=-$w,-$w" --set "fluid.wall bottom.max=$(calc "$xr + $w"),0" \
-    --set "fluid.wall left.min=-$w,0" \
-    --set "fluid.wall right.max=$(calc "$xr + $w"),$(calc "4 * $A")" \
-    "${EXTRA[@]}" > "$OUT/$name.txt" 2>&1
+  f1_run "$RUN" "$n" "$THREADS" "$OUT/$name" "${EXTRA[@]}"
   rc=$?
   set -e
   end=$(date +%s.%N)

@@ -273,6 +273,7 @@ static int setup(fluid_run *s, fsi_participant *part)
     s->scheme = fluid_scheme_create(c, ROLE, pr, p, s->msg, ms);
     if (!s->scheme)
         return -1;
+    fluid_scheme_use_timers(s->scheme, &s->timers);
     const char *start = fsi_case_get(c, ROLE, "initial_pressure");
     if (!start || strcmp(start, "zero") != 0)
         hydrostatic_start(s);
@@ -535,6 +536,22 @@ static int exchange(fluid_run *s, fsi_participant *part, double t0)
     return 0;
 }
 
+/* Every phase's seconds and share of the busy time (the main loop's own phases; the
+ * scheme's "rates: ..." split its "rates"), for docs/performance.md. */
+static void log_phases(const fsi_timers *t)
+{
+    double busy = 0.0;
+    for (int i = 0; i < t->n; i++)
+        busy += strchr(t->name[i], ':') ? 0.0 : t->seconds[i];
+    char line[1024];
+    size_t len = 0;
+    for (int i = 0; i < t->n && len < sizeof line; i++)
+        len += (size_t)snprintf(line + len, sizeof line - len, "%s%s %.3f s (%.1f %%)",
+                                i > 0 ? ", " : "", t->name[i], t->seconds[i],
+                                busy > 0.0 ? 100.0 * t->seconds[i] / busy : 0.0);
+    fsi_info("performance: phases: %s", line);
+}
+
 int main(void)
 {
     fsi_participant *part = fsi_open(NULL, ROLE, NULL, DBL_MAX);
@@ -609,6 +626,7 @@ int main(void)
                  fluid_scheme_pair_count(s.scheme), omp_get_max_threads(),
                  s.timers.seconds[s.t_rates], s.timers.seconds[s.t_integrate],
                  busy > 0.0 ? (double)s.n_fluid * (double)s.steps / busy : 0.0);
+        log_phases(&s.timers);
     }
     free_run(&s);
     return fsi_close(part, &s.timers);

@@ -24,6 +24,7 @@
 #include "fluid_particles.h"
 #include "h5_output.h"
 #include "periodic.h"
+#include "timers.h"
 
 typedef struct fluid_scheme fluid_scheme;
 
@@ -78,6 +79,11 @@ void fluid_scheme_boundary_loads(const fluid_scheme *s, const fluid_particles *p
 
 /* The scheme's own fields of the current frame (e.g. flags of singular families). */
 int fluid_scheme_write_fields(const fluid_scheme *s, fsi_h5_writer *out);
+
+/* From now on the scheme adds the wall time of its own phases (neighbour search,
+ * operators, ...: names of its choosing) to t, so that the run log splits the main
+ * loop's "rates" phase; t must outlive the scheme. NULL stops it. */
+void fluid_scheme_use_timers(fluid_scheme *s, fsi_timers *t);
 
 /* Pairs per particle of the last neighbour list (for the performance line). */
 long long fluid_scheme_pair_count(const fluid_scheme *s);

@@ -18,13 +18,26 @@ typedef struct {
     double rho0, c0, gamma;
 } ulph_eos;
 
+/* r^gamma; gamma = 7 (000 Eq. 6, the default) by multiplications: pow() of every
+ * particle at every evaluation cost as much as the walls. Equal to pow to round-off. */
+static inline double ulph_eos_power(double r, double gamma)
+{
+    if (gamma == 7.0) {
+        const double r2 = r * r, r4 = r2 * r2;
+        return r4 * r2 * r;
+    }
+    return pow(r, gamma);
+}
+
 static inline double ulph_eos_pressure(const ulph_eos *e, double rho)
 {
-    return e->rho0 * e->c0 * e->c0 / e->gamma * (pow(rho / e->rho0, e->gamma) - 1.0);
+    return e->rho0 * e->c0 * e->c0 / e->gamma * (ulph_eos_power(rho / e->rho0, e->gamma) - 1.0);
 }
 
 static inline double ulph_eos_density(const ulph_eos *e, double p)
 {
+    if (p == 0.0)
+        return e->rho0; /* exactly what the formula gives; every wall away from water */
     double base = 1.0 + e->gamma * p / (e->rho0 * e->c0 * e->c0);
     return e->rho0 * pow(base > 1e-6 ? base : 1e-6, 1.0 / e->gamma);
 }

@@ -20,6 +20,9 @@
 #define ULPH_KERNEL_H
 
 #include <math.h>
+#include <stdint.h>
+
+#include "ulph_exp.h"
 
 /* The seed paper's choices (000 §2.1.3, after Eq. 17): h = 1.2 dx, delta = 3 h. */
 #define ULPH_KERNEL_H_OVER_DX 1.2
@@ -50,8 +53,22 @@ static inline double ulph_kernel_w2(const ulph_kernel *k, double r2)
 {
     if (!(r2 < k->support2))
         return 0.0;
-    const double w = exp(-r2 * k->inv_h2) - k->shift;
+    const double w = ulph_exp_neg(r2 * k->inv_h2) - k->shift;
     return w > 0.0 ? k->alpha * w : 0.0;
+}
+
+/* w over a row: r2_w[q] = w(r2_w[q]) for n squared distances all below the support's
+ * square, without branches (a loop that vectorises where the target has a gather,
+ * e.g. -mavx2, for the table of ulph_exp.h); the same values as ulph_kernel_w2. */
+static inline void ulph_kernel_w2_row(const ulph_kernel *k, double *r2_w, int64_t n)
+{
+    for (int64_t q = 0; q < n; q++) {
+        /* Both sides of each choice computed first: a pure select, no branch. */
+        const double t = r2_w[q] * k->inv_h2, t_max = 700.0;
+        const double w = ulph_exp_neg_unchecked(t < t_max ? t : t_max) - k->shift;
+        const double aw = k->alpha * w;
+        r2_w[q] = w > 0.0 ? aw : 0.0;
+    }
 }
 
 /* w at distance r. */

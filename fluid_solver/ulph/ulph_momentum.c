@@ -76,7 +76,10 @@ static inline void pair_force(const pair_context *c, int i, int64_t k, double *o
     fsi_mat_vec(sum, xij, f);
     const double wv = ops->w[k] * p->volume[j];
     /* g_IJ = w V_J M_I^-1 x_IJ (ulph_operators.h): 000 Eq. 26 per pair. */
-    const double pi_ij = vx < 0.0 ? c->av * vx / (r2 + c->eps2) : 0.0;
+    /* min(vx, 0) rather than a branch around the division: the sign of vx is a coin
+     * toss per pair (a mispredicted branch each time), and av * 0 / (r2 + eps2) is 0. */
+    const double approach = vx < 0.0 ? vx : 0.0;
+    const double pi_ij = c->av * approach / (r2 + c->eps2);
     /* A wall pushes, never pulls: with p_I < 0 the pair's -p_I M_I^-1 term would draw I
      * into the wall, so p_I counts as 0 against a wall. */
     const double tension = p->pressure[i] < 0.0 && !(p->flags[j] & FLUID_PARTICLE_FLUID)
@@ -114,13 +117,13 @@ void ulph_momentum_rates(const ulph_operators *ops, const ulph_momentum_params *
         ulph_gradient_vector(ops, velocity_for_viscosity, L);
     /* Continuity sees the walls' own velocity (no penetration), not the virtual one. */
     ulph_divergence(ops, p->v, scratch->divergence);
-#pragma omp parallel for schedule(static) if (n >= ULPH_PARALLEL_MIN_PARTICLES)
+#pragma omp parallel for schedule(dynamic, ULPH_CHUNK) if (n >= ULPH_PARALLEL_MIN_PARTICLES)
     for (int i = 0; i < n; i++)
         stress_shape(ops, p, mu_stress, &L[(size_t)i * FSI_MAT_SIZE], i,
                      &A[(size_t)i * FSI_MAT_SIZE]);
 
     const pair_context c = make_context(ops, prm, p, velocity_for_viscosity, A);
-#pragma omp parallel for schedule(static) if (n >= ULPH_PARALLEL_MIN_PARTICLES)
+#pragma omp parallel for schedule(dynamic, ULPH_CHUNK) if (n >= ULPH_PARALLEL_MIN_PARTICLES)
     for (int i = 0; i < n; i++) {
         double *a_i = &dv_dt[i * FSI_DIM];
         if (!(p->flags[i] & FLUID_PARTICLE_FLUID)) {
@@ -148,7 +151,7 @@ void ulph_boundary_loads(const ulph_operators *ops, const ulph_momentum_params *
     const int n = p->n;
     const pair_context c = make_context(ops, prm, p, velocity_for_viscosity,
                                         scratch->stress_shape);
-#pragma omp parallel for schedule(static) if (n >= ULPH_PARALLEL_MIN_PARTICLES)
+#pragma omp parallel for schedule(dynamic, ULPH_CHUNK) if (n >= ULPH_PARALLEL_MIN_PARTICLES)
     for (int b = 0; b < n; b++) {
         double *f_b = &force[b * FSI_DIM];
         memset(f_b, 0, FSI_DIM * sizeof *f_b);

@@ -1,17 +1,19 @@
 /* The non-local operators of ULPH (000 Eqs. 8-15) over a CSR neighbour list built
- * each step from the shared neighbour grid: see ulph_operators.h.
+ * each evaluation from candidate lists (ulph_verlet.h): see ulph_operators.h.
  *
  * The build makes two passes over the particles, each parallel with no shared
- * writes: pass 1 counts each particle's neighbours within the support (its row
+ * writes: pass 1 counts each particle's candidates within the support (its row
  * length), a serial prefix sum turns the counts into row offsets, pass 2 fills each
  * row (J, w, x_IJ), sums M_I over it (000 Eq. 15), inverts M_I under the rule of the
- * header, and turns x_IJ into g_IJ = w V_J M_I^-1 x_IJ in place. The grid's query
- * order is deterministic, so both passes see the same neighbours in the same order
+ * header, and turns x_IJ into g_IJ = w V_J M_I^-1 x_IJ in place. Both passes walk the
+ * candidates in their fixed order, so they see the same neighbours in the same order
  * on any thread. */
 #include "ulph_operators.h"
 
 #include <stdlib.h>
 #include <string.h>
+
+#include "ulph_grow.h"
 
 void ulph_operators_init(ulph_operators *ops)
 {
@@ -39,19 +41,13 @@ static int reserve_points(ulph_operators *ops, int n)
     if (ops->offset && n <= ops->point_capacity)
         return 0;
     const size_t cap = (size_t)n + (size_t)n / 4 + 16;
-    int64_t *offset = realloc(ops->offset, (cap + 1) * sizeof *offset);
-    if (offset)
-        ops->offset = offset;
-    double *shape = realloc(ops->shape, cap * FSI_MAT_SIZE * sizeof *shape);
-    if (shape)
-        ops->shape = shape;
-    double *shape_inv = realloc(ops->shape_inv, cap * FSI_MAT_SIZE * sizeof *shape_inv);
-    if (shape_inv)
-        ops->shape_inv = shape_inv;
-    uint8_t *flags = realloc(ops->flags, cap * sizeof *flags);
-    if (flags)
-        ops->flags = flags;
-    if (!offset || !shape || !shape_inv || !flags)
+    int failed = 0;
+    ops->offset = ulph_grow(ops->offset, (cap + 1) * sizeof *ops->offset, &failed);
+    ops->shape = ulph_grow(ops->shape, cap * FSI_MAT_SIZE * sizeof *ops->shape, &failed);
+    ops->shape_inv = ulph_grow(ops->shape_inv, cap * FSI_MAT_SIZE * sizeof *ops->shape_inv,
+                               &failed);
+    ops->flags = ulph_grow(ops->flags, cap * sizeof *ops->flags, &failed);
+    if (failed)
         return -1;
     ops->point_capacity = (int)cap;
     return 0;
@@ -63,16 +59,11 @@ static int reserve_pairs(ulph_operators *ops, int64_t n_pairs)
     if (ops->g && n_pairs <= ops->pair_capacity)
         return 0;
     const size_t cap = (size_t)n_pairs + (size_t)n_pairs / 4 + 64;
-    int32_t *neighbour = realloc(ops->neighbour, cap * sizeof *neighbour);
-    if (neighbour)
-        ops->neighbour = neighbour;
-    double *w = realloc(ops->w, cap * sizeof *w);
-    if (w)
-        ops->w = w;
-    double *g = realloc(ops->g, cap * FSI_DIM * sizeof *g);
-    if (g)
-        ops->g = g;
-    if (!neighbour || !w || !g)
+    int failed = 0;
+    ops->neighbour = ulph_grow(ops->neighbour, cap * sizeof *ops->neighbour, &failed);
+    ops->w = ulph_grow(ops->w, cap * sizeof *ops->w, &failed);
+    ops->g = ulph_grow(ops->g, cap * FSI_DIM * sizeof *ops->g, &failed);
+    if (failed)
         return -1;
     ops->pair_capacity = (int64_t)cap;
     return 0;
@@ -100,53 +91,62 @@ static int shape_inverse(const double *m, double *m_inv, double max_condition)
     return fsi_mat_norm(residual) <= MAX_INVERSE_RESIDUAL ? 0 : -1;
 }
 
-/* Pass 1: the length of particle i's row. */
-static int64_t row_length(const ulph_kernel *k, const fsi_neighbour_grid *grid, const double *x,
-                          int i)
+/* Pass 1: the length of particle i's row, its candidates within the support. */
+static int64_t row_length(const ulph_operators *ops, const ulph_kernel *k,
+                          const ulph_verlet *list, const double *x, int i)
 {
-    fsi_grid_query q;
-    fsi_grid_query_begin(&q, grid, x + (int64_t)i * FSI_DIM, k->support);
     int64_t count = 0;
-    int j;
-    double r2;
-    while (fsi_grid_query_next(&q, &j, &r2))
-        if (j != i && r2 < k->support2)
-            count++;
+    for (int64_t c = list->offset[i]; c < list->offset[i + 1]; c++) {
+        double rel[FSI_DIM], r2 = 0.0;
+        ulph_pair_vector(ops, x, i, list->candidate[c], rel);
+        for (int d = 0; d < FSI_DIM; d++)
+            r2 += rel[d] * rel[d];
+        count += r2 < k->support2;
+    }
     return count;
 }
 
 /* Pass 2: fills particle i's row, M_I, M_I^-1 and g; returns 1 when the particle is
  * flagged ULPH_SINGULAR_SHAPE, else 0. */
-static int fill_row(ulph_operators *ops, const ulph_kernel *k, const fsi_neighbour_grid *grid,
+static int fill_row(ulph_operators *ops, const ulph_kernel *k, const ulph_verlet *list,
                     const fluid_particles *p, int i)
 {
     const double *restrict x = p->x;
     const double *restrict volume = p->volume;
-    const double *xi = x + (int64_t)i * FSI_DIM;
     const int64_t first = ops->offset[i];
     double m[FSI_MAT_SIZE];
     fsi_mat_zero(m);
     int informative = 0; /* neighbours that add to M: w V_J > 0 at a non-zero distance */
 
-    fsi_grid_query q;
-    fsi_grid_query_begin(&q, grid, xi, k->support);
+    /* The neighbours within the support, compacted in the candidates' order, with x_IJ
+     * in g and r^2 in w for now; then the kernel values in a loop of their own (no
+     * call, no gather: the compiler can unroll and vectorise it), then M. */
     int64_t e = first;
-    int j;
-    double r2;
-    while (fsi_grid_query_next(&q, &j, &r2)) {
-        if (j == i || !(r2 < k->support2))
-            continue;
-        const double w = ulph_kernel_w2(k, r2);
-        const double wv = w * volume[j];
-        double *rel = ops->g + e * FSI_DIM; /* x_IJ for now, g_IJ below */
+    for (int64_t c = list->offset[i]; c < list->offset[i + 1]; c++) {
+        const int j = list->candidate[c];
+        double rel[FSI_DIM], r2 = 0.0;
         ulph_pair_vector(ops, x, i, j, rel);
+        for (int d = 0; d < FSI_DIM; d++)
+            r2 += rel[d] * rel[d];
+        if (!(r2 < k->support2))
+            continue;
+        for (int d = 0; d < FSI_DIM; d++)
+            ops->g[e * FSI_DIM + d] = rel[d]; /* x_IJ for now, g_IJ below */
         ops->neighbour[e] = j;
-        ops->w[e] = w;
-        fsi_mat_add_outer(m, wv, rel, rel);     /* 000 Eq. 15 */
-        informative += wv > 0.0 && r2 > 0.0;
+        ops->w[e] = r2;
         e++;
     }
     const int64_t end = e; /* == offset[i + 1]: pass 1 saw the same neighbours */
+    ulph_kernel_w2_row(k, ops->w + first, end - first);
+    for (int64_t q = first; q < end; q++) {
+        const double *rel = ops->g + q * FSI_DIM;
+        const double wv = ops->w[q] * volume[ops->neighbour[q]];
+        double r2 = 0.0;
+        for (int d = 0; d < FSI_DIM; d++)
+            r2 += rel[d] * rel[d];
+        fsi_mat_add_outer(m, wv, rel, rel);     /* 000 Eq. 15 */
+        informative += wv > 0.0 && r2 > 0.0;
+    }
 
     /* Exactly symmetric (w V x_a x_b and w V x_b x_a round differently); the adjugate
      * inverse of a symmetric matrix is then exactly symmetric too. */
@@ -155,6 +155,11 @@ static int fill_row(ulph_operators *ops, const ulph_kernel *k, const fsi_neighbo
             FSI_MAT(m, r, c) = FSI_MAT(m, c, r) = 0.5 * (FSI_MAT(m, r, c) + FSI_MAT(m, c, r));
     fsi_mat_copy(m, ops->shape + (int64_t)i * FSI_MAT_SIZE);
     double *m_inv = ops->shape_inv + (int64_t)i * FSI_MAT_SIZE;
+    if (list->idle[i]) {
+        fsi_mat_zero(m_inv);
+        ops->flags[i] = ULPH_IDLE_WALL;
+        return 0;
+    }
     if (informative < FSI_DIM + 1 || shape_inverse(m, m_inv, ops->max_condition) != 0) {
         fsi_mat_zero(m_inv);
         memset(ops->g + first * FSI_DIM, 0, sizeof(double) * (size_t)((end - first) * FSI_DIM));
@@ -172,24 +177,24 @@ static int fill_row(ulph_operators *ops, const ulph_kernel *k, const fsi_neighbo
     return 0;
 }
 
-int ulph_operators_update(ulph_operators *ops, const ulph_kernel *k,
-                          const fsi_neighbour_grid *grid, const fluid_particles *p)
+int ulph_operators_update_list(ulph_operators *ops, const ulph_kernel *k,
+                               const ulph_verlet *list, const fluid_particles *p)
 {
     const int n = p->n;
     ops->n = 0;
     ops->n_pairs = 0;
     ops->n_singular = 0;
-    ops->periodic = grid->periodic;
-    if (grid->n != n || n < 0 || reserve_points(ops, n) != 0) {
+    ops->periodic = list->periodic;
+    if (list->n != n || n < 0 || reserve_points(ops, n) != 0) {
         ulph_operators_free(ops);
         return -1;
     }
     const int parallel = n >= ULPH_PARALLEL_MIN_PARTICLES;
     int64_t *offset = ops->offset;
     offset[0] = 0;
-#pragma omp parallel for schedule(static) if (parallel)
+#pragma omp parallel for schedule(dynamic, ULPH_CHUNK) if (parallel)
     for (int i = 0; i < n; i++)
-        offset[i + 1] = row_length(k, grid, p->x, i);
+        offset[i + 1] = row_length(ops, k, list, p->x, i);
     for (int i = 0; i < n; i++)
         offset[i + 1] += offset[i];
     if (reserve_pairs(ops, offset[n]) != 0) {
@@ -197,19 +202,33 @@ int ulph_operators_update(ulph_operators *ops, const ulph_kernel *k,
         return -1;
     }
     int n_singular = 0;
-#pragma omp parallel for schedule(static) if (parallel) reduction(+ : n_singular)
+#pragma omp parallel for schedule(dynamic, ULPH_CHUNK) if (parallel) reduction(+ : n_singular)
     for (int i = 0; i < n; i++)
-        n_singular += fill_row(ops, k, grid, p, i);
+        n_singular += fill_row(ops, k, list, p, i);
     ops->n = n;
     ops->n_pairs = offset[n];
     ops->n_singular = n_singular;
     return 0;
 }
 
+int ulph_operators_update(ulph_operators *ops, const ulph_kernel *k,
+                          const fsi_neighbour_grid *grid, const fluid_particles *p)
+{
+    ulph_verlet list;
+    ulph_verlet_init(&list);
+    int rc = ulph_verlet_build(&list, grid, p, k->support, 0);
+    if (rc == 0)
+        rc = ulph_operators_update_list(ops, k, &list, p);
+    else
+        ulph_operators_free(ops);
+    ulph_verlet_free(&list);
+    return rc;
+}
+
 void ulph_gradient_scalar(const ulph_operators *ops, const double *f, double *grad)
 {
     const int n = ops->n;
-#pragma omp parallel for schedule(static) if (n >= ULPH_PARALLEL_MIN_PARTICLES)
+#pragma omp parallel for schedule(dynamic, ULPH_CHUNK) if (n >= ULPH_PARALLEL_MIN_PARTICLES)
     for (int i = 0; i < n; i++) {
         double s[FSI_DIM] = {0};
         if (!(ops->flags[i] & ULPH_SINGULAR_SHAPE)) {
@@ -229,7 +248,7 @@ void ulph_gradient_scalar(const ulph_operators *ops, const double *f, double *gr
 void ulph_gradient_vector(const ulph_operators *ops, const double *u, double *grad)
 {
     const int n = ops->n;
-#pragma omp parallel for schedule(static) if (n >= ULPH_PARALLEL_MIN_PARTICLES)
+#pragma omp parallel for schedule(dynamic, ULPH_CHUNK) if (n >= ULPH_PARALLEL_MIN_PARTICLES)
     for (int i = 0; i < n; i++) {
         double s[FSI_MAT_SIZE] = {0};
         if (!(ops->flags[i] & ULPH_SINGULAR_SHAPE)) {
@@ -249,7 +268,7 @@ void ulph_gradient_vector(const ulph_operators *ops, const double *u, double *gr
 void ulph_divergence(const ulph_operators *ops, const double *u, double *div)
 {
     const int n = ops->n;
-#pragma omp parallel for schedule(static) if (n >= ULPH_PARALLEL_MIN_PARTICLES)
+#pragma omp parallel for schedule(dynamic, ULPH_CHUNK) if (n >= ULPH_PARALLEL_MIN_PARTICLES)
     for (int i = 0; i < n; i++) {
         double s = 0.0;
         if (!(ops->flags[i] & ULPH_SINGULAR_SHAPE)) {

@@ -26,7 +26,7 @@
  * they add nothing), stored as I -> J in I's row and J -> I in J's row, in the grid's
  * deterministic order. Per pair it keeps J, w(x_IJ) and the vector g_IJ = w V_J M_I^-1 x_IJ, so
  * each operator is one gather, sum_J A(f) g_IJ. Both passes of the build and every
- * operator are parallel over particles (OpenMP, static schedule) and each particle
+ * operator are parallel over particles (OpenMP, dynamic chunks) and each particle
  * writes only its own row and outputs, in a fixed order: the results are the same
  * bit for bit with any number of threads. Nothing is allocated unless the particle
  * or pair count grows beyond an earlier update's.
@@ -60,6 +60,7 @@
 #include "neighbour_grid.h"
 #include "small_tensor.h"
 #include "ulph_kernel.h"
+#include "ulph_verlet.h"
 
 /* Default bound on the Frobenius condition number |M| |M^-1| of a usable shape
  * tensor (ulph_operators.max_condition; at least FSI_DIM for any M). It is not about
@@ -77,9 +78,18 @@
  * work; the results are the same either way). */
 #define ULPH_PARALLEL_MIN_PARTICLES 128
 
+/* Particles per chunk of the parallel loops, handed out dynamically. The work per
+ * particle is far from even: fluid particles come first, wall particles last, and
+ * idle walls (ulph_verlet.h) and most walls' loops do almost nothing, so a static split
+ * in halves left one thread with nearly all of it; chunks also let a thread that keeps
+ * its core take over from one that lost it to another job. Every particle's results
+ * are computed alone, so they do not depend on which thread takes it. */
+#define ULPH_CHUNK 64
+
 /* Per-particle flags (ulph_operators.flags). */
 enum {
     ULPH_SINGULAR_SHAPE = 1,    /* M^-1 unusable: M^-1 = 0, gradients zero (the rule above) */
+    ULPH_IDLE_WALL = 2,         /* an idle wall (ulph_verlet.h): empty row, M = M^-1 = 0 */
 };
 
 /* Read-only for callers (except max_condition, which may be set before an update). */
@@ -122,6 +132,14 @@ void ulph_operators_free(ulph_operators *ops);
  * hold p->n points or memory runs out (ops is then empty). */
 int ulph_operators_update(ulph_operators *ops, const ulph_kernel *k,
                           const fsi_neighbour_grid *grid, const fluid_particles *p);
+
+/* The same from candidate lists built (or kept, ulph_verlet_update) for p, with every
+ * pair now within the support among them: rows hold the candidates within the support
+ * in the candidates' order; an idle wall's row is empty and flagged ULPH_IDLE_WALL
+ * (not counted in n_singular). ulph_operators_update is this with candidates from the
+ * grid at the support itself and no idle walls. */
+int ulph_operators_update_list(ulph_operators *ops, const ulph_kernel *k,
+                               const ulph_verlet *list, const fluid_particles *p);
 
 /* grad f (000 Eq. 13) of the scalar field f[n]: grad[i * FSI_DIM + a] = df/dx_a. */
 void ulph_gradient_scalar(const ulph_operators *ops, const double *f, double *grad);

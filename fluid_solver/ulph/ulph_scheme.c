@@ -1,7 +1,7 @@
 /* The ULPH scheme behind fluid_scheme.h (000 §2.1, §2.3): one evaluation of the rates
  * is
- *   1. neighbour grid and lists, shape tensors M and M^-1 at the current positions
- *      with V = m / rho (ulph_operators);
+ *   1. neighbour lists (from candidate lists with a skin, ulph_verlet), shape tensors
+ *      M and M^-1 at the current positions with V = m / rho (ulph_operators);
  *   2. pressure of every fluid particle from its density (Tait, 000 Eq. 6);
  *   3. wall particles from the fluid around them (000 Eqs. 50-54, ulph_walls);
  *   4. when a density filter is due (every density_filter_interval steps, 000 Eq. 24
@@ -22,11 +22,19 @@
 #include "ulph_operators.h"
 #include "ulph_walls.h"
 
+/* The phases of one evaluation, timed separately (fluid_scheme_use_timers). */
+enum { PHASE_SEARCH, PHASE_OPERATORS, PHASE_STATE, PHASE_WALLS, PHASE_FILTER, PHASE_MOMENTUM,
+       N_PHASES };
+static const char *const phase_name[N_PHASES] = {
+    "rates: neighbour search", "rates: operators", "rates: equation of state",
+    "rates: walls", "rates: density filter", "rates: momentum"};
+
 struct fluid_scheme {
     ulph_kernel kernel;
     ulph_eos eos;
     ulph_momentum_params momentum;
-    fsi_neighbour_grid grid;
+    ulph_verlet list;
+    double skin;                /* of the candidate lists [m] */
     ulph_operators ops;
     ulph_momentum_scratch scratch;
     const unsigned char *free_slip;
@@ -36,7 +44,28 @@ struct fluid_scheme {
     int filter_due;
     int tension;
     int capacity; /* particles the scratch arrays hold */
+    fsi_timers *timers;         /* NULL: not timed */
+    int phase[N_PHASES];        /* their indices in timers */
 };
+
+void fluid_scheme_use_timers(fluid_scheme *s, fsi_timers *t)
+{
+    s->timers = t;
+    for (int k = 0; t && k < N_PHASES; k++)
+        s->phase[k] = fsi_timer_index(t, phase_name[k]);
+}
+
+static void phase_start(fluid_scheme *s, int phase)
+{
+    if (s->timers)
+        fsi_timer_start(s->timers, s->phase[phase]);
+}
+
+static void phase_stop(fluid_scheme *s, int phase)
+{
+    if (s->timers)
+        fsi_timer_stop(s->timers, s->phase[phase]);
+}
 
 /* Room for n particles in the per-particle scratch: the moving boundary set changes
  * size between windows (fluid_boundary.h). 0, or -1 when memory runs out. */
@@ -92,8 +121,9 @@ fluid_scheme *fluid_scheme_create(const fsi_case *c, const char *role,
     s->cfl_force = fsi_case_get_real(c, role, "cfl_force", 0.25);
     s->filter_interval = fsi_case_get_int(c, role, "density_filter_interval", 20);
     s->tension = fsi_case_get_bool(c, role, "tension", 0);
-    fsi_grid_init(&s->grid);
-    fsi_grid_set_periodic(&s->grid, &props->periodic);
+    s->skin = fsi_case_get_real(c, role, "neighbour_skin", ULPH_VERLET_SKIN) * s->kernel.support;
+    ulph_verlet_init(&s->list);
+    fsi_grid_set_periodic(&s->list.grid, &props->periodic);
     ulph_operators_init(&s->ops);
     if (reserve(s, p->n) != 0) {
         fluid_scheme_free(s);
@@ -107,7 +137,7 @@ void fluid_scheme_free(fluid_scheme *s)
 {
     if (!s)
         return;
-    fsi_grid_free(&s->grid);
+    ulph_verlet_free(&s->list);
     ulph_operators_free(&s->ops);
     ulph_momentum_free(&s->scratch);
     free(s->velocity_for_viscosity);
@@ -134,7 +164,7 @@ double fluid_scheme_smoothing_length(const fluid_scheme *s)
 static void fluid_state(const fluid_scheme *s, fluid_particles *p)
 {
     const int n = p->n;
-#pragma omp parallel for schedule(static) if (n >= ULPH_PARALLEL_MIN_PARTICLES)
+#pragma omp parallel for schedule(dynamic, ULPH_CHUNK) if (n >= ULPH_PARALLEL_MIN_PARTICLES)
     for (int i = 0; i < n; i++)
         if (p->flags[i] & FLUID_PARTICLE_FLUID) {
             /* Without tension, p >= 0 (docs/ulph.md "Tension"): a stretched front
@@ -165,7 +195,7 @@ static void density_filter(fluid_scheme *s, fluid_particles *p)
     const ulph_operators *ops = &s->ops;
     const double w0 = ulph_kernel_w2(&s->kernel, 0.0);
     ulph_gradient_scalar(ops, p->density, s->density_gradient);
-#pragma omp parallel for schedule(static) if (n >= ULPH_PARALLEL_MIN_PARTICLES)
+#pragma omp parallel for schedule(dynamic, ULPH_CHUNK) if (n >= ULPH_PARALLEL_MIN_PARTICLES)
     for (int i = 0; i < n; i++) {
         s->filtered[i] = p->density[i];
         if (!(p->flags[i] & FLUID_PARTICLE_FLUID))
@@ -196,24 +226,37 @@ int fluid_scheme_rates(fluid_scheme *s, fluid_particles *p, double *drho_dt, dou
         snprintf(msg, msg_size, "out of memory for the ULPH scheme of %d particles", p->n);
         return -1;
     }
+    phase_start(s, PHASE_STATE);
     fluid_state(s, p);
-    if (fsi_grid_build(&s->grid, p->x, p->n, s->kernel.support) != 0 ||
-        ulph_operators_update(&s->ops, &s->kernel, &s->grid, p) != 0) {
+    phase_stop(s, PHASE_STATE);
+    phase_start(s, PHASE_SEARCH);
+    int rc = ulph_verlet_update(&s->list, p, s->kernel.support, s->skin) < 0 ? -1 : 0;
+    phase_stop(s, PHASE_SEARCH);
+    phase_start(s, PHASE_OPERATORS);
+    rc = rc != 0 ? rc : ulph_operators_update_list(&s->ops, &s->kernel, &s->list, p);
+    phase_stop(s, PHASE_OPERATORS);
+    if (rc != 0) {
         snprintf(msg, msg_size, "cannot build the neighbour lists of %d particles (a "
                  "position is not finite, or memory ran out)", p->n);
         return -1;
     }
-    ulph_walls_update(&s->ops, &s->eos, s->momentum.gravity,
-                      s->free_slip, p, s->velocity_for_viscosity);
+    phase_start(s, PHASE_WALLS);
+    ulph_walls_update(&s->ops, &s->eos, s->momentum.gravity, s->free_slip, p,
+                      s->velocity_for_viscosity);
+    phase_stop(s, PHASE_WALLS);
     if (s->filter_due) {
+        phase_start(s, PHASE_FILTER);
         density_filter(s, p);
         fluid_state(s, p);
         ulph_walls_update(&s->ops, &s->eos, s->momentum.gravity,
                           s->free_slip, p, s->velocity_for_viscosity);
         s->filter_due = 0;
+        phase_stop(s, PHASE_FILTER);
     }
+    phase_start(s, PHASE_MOMENTUM);
     ulph_momentum_rates(&s->ops, &s->momentum, p, s->velocity_for_viscosity, &s->scratch,
                         drho_dt, dv_dt);
+    phase_stop(s, PHASE_MOMENTUM);
     return 0;
 }
 
@@ -261,7 +304,7 @@ int fluid_scheme_write_fields(const fluid_scheme *s, fsi_h5_writer *out)
     if (!flags)
         return -1;
     for (int i = 0; i < n; i++)
-        flags[i] = s->ops.flags[i];
+        flags[i] = s->ops.flags[i] & ULPH_SINGULAR_SHAPE;
     int rc = fsi_h5_write_field_int(out, "singular_shape", flags, 1);
     free(flags);
     return rc;

@@ -9,7 +9,7 @@ void ulph_walls_update(const ulph_operators *ops, const ulph_eos *eos, const dou
                        double *velocity_for_viscosity)
 {
     const int n = p->n;
-#pragma omp parallel for schedule(static) if (n >= ULPH_PARALLEL_MIN_PARTICLES)
+#pragma omp parallel for schedule(dynamic, ULPH_CHUNK) if (n >= ULPH_PARALLEL_MIN_PARTICLES)
     for (int s = 0; s < n; s++) {
         double *vv = &velocity_for_viscosity[s * FSI_DIM];
         if (!(p->flags[s] & (FLUID_PARTICLE_WALL | FLUID_PARTICLE_MOVING_BOUNDARY))) {

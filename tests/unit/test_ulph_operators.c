@@ -205,6 +205,18 @@ static void check_kernel(void)
     }
     CHECK(monotone, "w is not non-negative and decreasing on [0, delta]");
 
+    /* The inline exp(-t) of the kernel against libm's, over [0, 40] (any support up to
+     * q = 6.3) and beyond. */
+    double worst = 0.0;
+    for (int i = 0; i <= 400000; i++) {
+        const double t = i * 1e-4, e = exp(-t);
+        worst = fmax(worst, fabs(ulph_exp_neg(t) - e) / e);
+    }
+    printf("kernel: inline exp(-t) within %.3g of libm's on [0, 40]\n", worst);
+    CHECK(worst < 1e-15, "inline exp(-t) off by %g relative", worst);
+    CHECK(ulph_exp_neg(0.0) == 1.0 && ulph_exp_neg(800.0) == 0.0 && isnan(ulph_exp_neg(NAN)),
+          "inline exp(-t) at 0, 800, NaN");
+
     /* Unit integral in 2D and 3D, for the seed's q = 3 and another support. */
     for (int dim = 2; dim <= 3; dim++)
         for (int iq = 0; iq < 2; iq++) {

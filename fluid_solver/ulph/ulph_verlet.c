@@ -1,0 +1,143 @@
+/* Candidate neighbour lists with a skin: see ulph_verlet.h. */
+#include "ulph_verlet.h"
+
+#include <math.h>
+#include <stdlib.h>
+
+#include "ulph_grow.h"
+#include "ulph_operators.h"
+
+void ulph_verlet_init(ulph_verlet *v)
+{
+    *v = (ulph_verlet){0};
+    fsi_grid_init(&v->grid);
+}
+
+void ulph_verlet_free(ulph_verlet *v)
+{
+    free(v->offset);
+    free(v->candidate);
+    free(v->idle);
+    free(v->x_built);
+    fsi_grid_free(&v->grid);
+    ulph_verlet_init(v);
+}
+
+/* Room for n particles and n_pairs candidates; 0, or -1 when memory runs out. */
+static int reserve(ulph_verlet *v, int n, int64_t n_pairs)
+{
+    int failed = 0;
+    if (!v->offset || n > v->point_capacity) {
+        const size_t cap = (size_t)n + (size_t)n / 4 + 16;
+        v->offset = ulph_grow(v->offset, (cap + 1) * sizeof *v->offset, &failed);
+        v->idle = ulph_grow(v->idle, cap * sizeof *v->idle, &failed);
+        v->x_built = ulph_grow(v->x_built, cap * FSI_DIM * sizeof *v->x_built, &failed);
+        v->point_capacity = failed ? 0 : (int)cap;
+    }
+    if (!failed && (!v->candidate || n_pairs > v->pair_capacity)) {
+        const size_t cap = (size_t)n_pairs + (size_t)n_pairs / 4 + 64;
+        v->candidate = ulph_grow(v->candidate, cap * sizeof *v->candidate, &failed);
+        v->pair_capacity = failed ? 0 : (int64_t)cap;
+    }
+    return failed ? -1 : 0;
+}
+
+/* Pass 1: the length of i's row (0 for an idle wall, which is marked). */
+static int64_t row_length(ulph_verlet *v, const fsi_neighbour_grid *grid,
+                          const fluid_particles *p, int i, int prune)
+{
+    fsi_grid_query q;
+    fsi_grid_query_begin(&q, grid, p->x + (int64_t)i * FSI_DIM, v->radius);
+    const double radius2 = v->radius * v->radius;
+    int64_t count = 0;
+    int fluid = 0, j;
+    double r2;
+    while (fsi_grid_query_next(&q, &j, &r2))
+        if (j != i && r2 <= radius2) {
+            count++;
+            fluid |= p->flags[j] & FLUID_PARTICLE_FLUID;
+        }
+    v->idle[i] = prune && (p->flags[i] & FLUID_PARTICLE_WALL) && !fluid;
+    return v->idle[i] ? 0 : count;
+}
+
+/* Pass 2: fills i's row in the grid's order. */
+static void fill_row(ulph_verlet *v, const fsi_neighbour_grid *grid, const fluid_particles *p,
+                     int i)
+{
+    if (v->idle[i])
+        return;
+    fsi_grid_query q;
+    fsi_grid_query_begin(&q, grid, p->x + (int64_t)i * FSI_DIM, v->radius);
+    const double radius2 = v->radius * v->radius;
+    int64_t e = v->offset[i];
+    int j;
+    double r2;
+    while (fsi_grid_query_next(&q, &j, &r2))
+        if (j != i && r2 <= radius2)
+            v->candidate[e++] = j;
+}
+
+int ulph_verlet_build(ulph_verlet *v, const fsi_neighbour_grid *grid, const fluid_particles *p,
+                      double radius, int prune_idle_walls)
+{
+    const int n = p->n;
+    v->n = 0;
+    if (grid->n != n || n < 0 || reserve(v, n, 0) != 0)
+        return -1;
+    v->radius = radius;
+    v->periodic = grid->periodic;
+    const int parallel = n >= ULPH_PARALLEL_MIN_PARTICLES;
+    int64_t *offset = v->offset;
+    offset[0] = 0;
+#pragma omp parallel for schedule(dynamic, ULPH_CHUNK) if (parallel)
+    for (int i = 0; i < n; i++)
+        offset[i + 1] = row_length(v, grid, p, i, prune_idle_walls);
+    for (int i = 0; i < n; i++)
+        offset[i + 1] += offset[i];
+    if (reserve(v, n, offset[n]) != 0)
+        return -1;
+#pragma omp parallel for schedule(dynamic, ULPH_CHUNK) if (parallel)
+    for (int i = 0; i < n; i++)
+        fill_row(v, grid, p, i);
+    for (int64_t k = 0; k < (int64_t)n * FSI_DIM; k++)
+        v->x_built[k] = p->x[k];
+    v->n = n;
+    v->builds++;
+    return 0;
+}
+
+/* Whether every particle is within skin / 2 of where it was at the last build (a
+ * little less, so that round-off in the distances cannot lose a pair). False for a
+ * non-finite position. */
+static int still_valid(const ulph_verlet *v, const fluid_particles *p)
+{
+    const int n = p->n;
+    const double limit2 = 0.999 * 0.25 * v->skin * v->skin;
+    double largest = 0.0;
+#pragma omp parallel for schedule(dynamic, ULPH_CHUNK) if (n >= ULPH_PARALLEL_MIN_PARTICLES) \
+    reduction(max : largest)
+    for (int i = 0; i < n; i++) {
+        double d2 = 0.0;
+        for (int d = 0; d < FSI_DIM; d++) {
+            const double dx = p->x[(int64_t)i * FSI_DIM + d] - v->x_built[(int64_t)i * FSI_DIM + d];
+            d2 += dx * dx;
+        }
+        /* NaN never compares: !(d2 <= largest) keeps it. */
+        largest = !(d2 <= largest) ? (isnan(d2) ? INFINITY : d2) : largest;
+    }
+    return largest < limit2;
+}
+
+int ulph_verlet_update(ulph_verlet *v, const fluid_particles *p, double support, double skin)
+{
+    if (v->builds > 0 && v->n == p->n && v->support == support && v->skin == skin &&
+        still_valid(v, p))
+        return 0;
+    v->support = support;
+    v->skin = skin;
+    if (fsi_grid_build(&v->grid, p->x, p->n, support + skin) != 0 ||
+        ulph_verlet_build(v, &v->grid, p, support + skin, 1) != 0)
+        return -1;
+    return 1;
+}
