@@ -100,7 +100,7 @@ def main():
             print(f"    T={Te:6.3f}  Z_exp/a={Ze:7.3f}  Z_sim/a={Zi:7.3f}  {100 * (Zi - Ze) / Ze:+6.1f} %")
     if args.csv_out:
         with open(args.csv_out, "w", newline="") as f:
-            w = csv.writer(f)
+            w = csv.writer(f, lineterminator="\n")
             w.writerow(["run", "dx", "a_over_dx", "particles", "points", "rms",
                         "in_walls_max", "in_walls_end"])
             for run, dx, a, n, npts, rms, _, _, inw in results:
