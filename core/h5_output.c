@@ -42,6 +42,10 @@ struct fsi_h5_writer {
     frame_rec *done; /* complete frames, in the order they were written */
     int ndone;
     int cap;
+    const int *order; /* point i of the caller's arrays is row order[i] (or NULL) */
+    int order_n;
+    unsigned char *scratch; /* rows in stored order */
+    size_t scratch_bytes;
 };
 
 /* ------------------------------------------------------------------ helpers */
@@ -431,6 +435,35 @@ int fsi_h5_write_static_int(fsi_h5_writer *w, const char *field, const int32_t *
     return write_static(w, field, H5T_STD_I32LE, H5T_NATIVE_INT32, data, n, ncomp);
 }
 
+int fsi_h5_set_point_order(fsi_h5_writer *w, const int *order, int n)
+{
+    if (!w || (order && n < 0))
+        return -1;
+    w->order = order;
+    w->order_n = order ? n : 0;
+    return 0;
+}
+
+/* data (n rows of row_bytes) in stored order: data itself, or the scratch holding row
+ * i at order[i]. NULL when memory runs out. */
+static const void *in_point_order(fsi_h5_writer *w, const void *data, int n, size_t row_bytes)
+{
+    if (!w->order || n != w->order_n || n == 0)
+        return data;
+    const size_t bytes = (size_t)n * row_bytes;
+    if (bytes > w->scratch_bytes) {
+        unsigned char *grown = realloc(w->scratch, bytes);
+        if (!grown)
+            return NULL;
+        w->scratch = grown;
+        w->scratch_bytes = bytes;
+    }
+    for (int i = 0; i < n; i++)
+        memcpy(w->scratch + (size_t)w->order[i] * row_bytes,
+               (const unsigned char *)data + (size_t)i * row_bytes, row_bytes);
+    return w->scratch;
+}
+
 int fsi_h5_begin_frame(fsi_h5_writer *w, int frame, double time, long step, int n,
                        const double *position)
 {
@@ -443,6 +476,10 @@ int fsi_h5_begin_frame(fsi_h5_writer *w, int frame, double time, long step, int 
     }
     if (frame < 0 || n < 0 || (n > 0 && !position)) {
         fsi_error("h5 output: bad frame %d with %d points for %s", frame, n, w->h5_path);
+        return -1;
+    }
+    if (n > 0 && !(position = in_point_order(w, position, n, FSI_DIM * sizeof *position))) {
+        fsi_error("h5 output: out of memory for frame %d of %s", frame, w->h5_path);
         return -1;
     }
     if (open_file(w) < 0)
@@ -466,7 +503,7 @@ int fsi_h5_begin_frame(fsi_h5_writer *w, int frame, double time, long step, int 
 }
 
 static int write_field(fsi_h5_writer *w, const char *field, hid_t ftype, hid_t mtype,
-                       const void *data, int ncomp, int is_int)
+                       const void *data, int ncomp, int is_int, size_t item_bytes)
 {
     if (!w || !field)
         return -1;
@@ -478,6 +515,11 @@ static int write_field(fsi_h5_writer *w, const char *field, hid_t ftype, hid_t m
         fsi_error("h5 output: field '%s' of frame %d in %s has %d components "
                   "(1, %d or %d allowed)", field, w->cur.frame, w->h5_path, ncomp, FSI_DIM,
                   FSI_DIM * FSI_DIM);
+        w->frame_failed = 1;
+        return -1;
+    }
+    if (w->cur.n > 0 && !(data = in_point_order(w, data, w->cur.n, (size_t)ncomp * item_bytes))) {
+        fsi_error("h5 output: out of memory for field '%s' of %s", field, w->h5_path);
         w->frame_failed = 1;
         return -1;
     }
@@ -494,13 +536,15 @@ static int write_field(fsi_h5_writer *w, const char *field, hid_t ftype, hid_t m
 int fsi_h5_write_field_real(fsi_h5_writer *w, const char *field, const double *data,
                             int ncomp)
 {
-    return write_field(w, field, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, data, ncomp, 0);
+    return write_field(w, field, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, data, ncomp, 0,
+                       sizeof *data);
 }
 
 int fsi_h5_write_field_int(fsi_h5_writer *w, const char *field, const int32_t *data,
                            int ncomp)
 {
-    return write_field(w, field, H5T_STD_I32LE, H5T_NATIVE_INT32, data, ncomp, 1);
+    return write_field(w, field, H5T_STD_I32LE, H5T_NATIVE_INT32, data, ncomp, 1,
+                       sizeof *data);
 }
 
 int fsi_h5_end_frame(fsi_h5_writer *w)
@@ -545,6 +589,7 @@ void fsi_h5_close(fsi_h5_writer *w)
     for (int i = 0; i < w->ndone; i++)
         frame_rec_clear(&w->done[i]);
     free(w->done);
+    free(w->scratch);
     free(w->h5_path);
     free(w->xmf_path);
     free(w->xmf_tmp);

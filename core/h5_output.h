@@ -32,6 +32,13 @@ int fsi_h5_write_static_real(fsi_h5_writer *w, const char *field, const double *
 int fsi_h5_write_static_int(fsi_h5_writer *w, const char *field, const int32_t *data,
                             int n, int ncomp);
 
+/* From now on, frames of n points are stored in a fixed order although the caller's
+ * arrays are permuted (a solver that reorders its particles for locality): row i of
+ * every position and field array passed goes to row order[i] of the file (order a
+ * permutation of 0..n-1, owned by the caller and valid until the next call or the
+ * last frame). NULL: rows as passed. Frames of another size are stored as passed. */
+int fsi_h5_set_point_order(fsi_h5_writer *w, const int *order, int n);
+
 /* Opens frame 'frame' at simulated time 'time' after coupling window 'step',
  * with n points whose coordinates are position[n * FSI_DIM]. */
 int fsi_h5_begin_frame(fsi_h5_writer *w, int frame, double time, long step, int n,

@@ -62,6 +62,10 @@ static const fsi_key_spec common_keys[] = {
     {"periodic_max", FSI_KEY_VECTOR, "m", ZERO_VECTOR, 0, 0, 0, NULL,
      "Upper corner of the period box; its length along a periodic axis must be at least "
      "three supports of the kernel."},
+    {"reorder_interval", FSI_KEY_INT, "-", "200", FSI_BOUND_MIN, 0, 0, NULL,
+     "Every this many steps (at the next window's start) the fluid and wall particles are "
+     "sorted by cell so that neighbours sit close in memory (a speed matter only: the "
+     "output keeps the particles in their original order); 0 never."},
     {"energy_growth_limit", FSI_KEY_REAL, "-", "2", FSI_BOUND_MIN_OPEN, 1, 0, NULL,
      "The run stops as unstable when the kinetic energy exceeds this factor times (the "
      "initial kinetic and compression energy + the potential energy released since the "

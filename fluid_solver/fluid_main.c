@@ -30,6 +30,7 @@
 #include "fluid_wall_motion.h"
 #include "h5_output.h"
 #include "log.h"
+#include "neighbour_grid.h"
 #include "participant.h"
 #include "particle_health.h"
 #include "small_tensor.h"
@@ -68,6 +69,9 @@ typedef struct {
     int t_rates, t_integrate, t_exchange, t_output;
     long steps;
     int capacity;       /* particles x0 .. grad_p hold */
+    int *order;         /* original index (output row) of the particle at each index of
+                         * the fixed part; they are sorted by cell now and then */
+    long reorder_interval, reordered_at;
     char msg[512];
 } fluid_run;
 
@@ -86,6 +90,7 @@ static void free_run(fluid_run *s)
     fluid_wall_motion_free(&s->motion);
     fluid_coupling_free(&s->coupling);
     fluid_particles_free(&s->p);
+    free(s->order);
     fluid_geometry_free(&s->geometry);
     free(s->free_slip);
     free(s->x0);
@@ -233,6 +238,60 @@ static int reserve_run_arrays(fluid_run *s)
     return 0;
 }
 
+/* a[k] = old a[sorted[k]] for the n rows of width bytes; scratch holds n rows. */
+static void permute_rows(void *a, const int *sorted, int n, size_t width, void *scratch)
+{
+    unsigned char *src = a, *dst = scratch;
+    for (int k = 0; k < n; k++)
+        memcpy(dst + (size_t)k * width, src + (size_t)sorted[k] * width, width);
+    memcpy(a, scratch, (size_t)n * width);
+}
+
+/* Sorts the fluid and wall particles by cell (the neighbour grid's counting sort) so
+ * that the neighbours of a particle sit close in memory: a flow mixes the initial
+ * lattice order, and the pair loops then jump across the arrays. Everything indexed by
+ * particle follows (the arrays of p, the free-slip flags, the moving walls' indices,
+ * the output order); the scheme rebuilds what it keeps by index. The solid's particles
+ * at the tail stay where they are. Returns 0, or -1 when memory runs out (nothing
+ * changed). */
+static int reorder_particles(fluid_run *s)
+{
+    fluid_particles *p = &s->p;
+    const int n = s->n_fixed;
+    fsi_neighbour_grid grid;
+    fsi_grid_init(&grid);
+    void *scratch = malloc((size_t)(n > 0 ? n : 1) * FSI_DIM * sizeof(double));
+    int *inverse = malloc((size_t)(n > 0 ? n : 1) * sizeof *inverse);
+    if (!scratch || !inverse ||
+        fsi_grid_build(&grid, p->x, n, 2.0 * fluid_scheme_smoothing_length(s->scheme)) != 0) {
+        free(scratch);
+        free(inverse);
+        fsi_grid_free(&grid);
+        return -1;
+    }
+    const int *sorted = grid.sorted;
+    const size_t vec = FSI_DIM * sizeof(double);
+    permute_rows(p->id, sorted, n, sizeof *p->id, scratch);
+    permute_rows(p->x, sorted, n, vec, scratch);
+    permute_rows(p->v, sorted, n, vec, scratch);
+    permute_rows(p->mass, sorted, n, sizeof *p->mass, scratch);
+    permute_rows(p->volume, sorted, n, sizeof *p->volume, scratch);
+    permute_rows(p->density, sorted, n, sizeof *p->density, scratch);
+    permute_rows(p->pressure, sorted, n, sizeof *p->pressure, scratch);
+    permute_rows(p->boundary_acceleration, sorted, n, vec, scratch);
+    permute_rows(p->flags, sorted, n, sizeof *p->flags, scratch);
+    permute_rows(s->free_slip, sorted, n, sizeof *s->free_slip, scratch);
+    permute_rows(s->order, sorted, n, sizeof *s->order, scratch);
+    for (int k = 0; k < n; k++)
+        inverse[sorted[k]] = k;
+    fluid_wall_motion_renumber(&s->motion, inverse);
+    fluid_scheme_particles_reordered(s->scheme);
+    free(scratch);
+    free(inverse);
+    fsi_grid_free(&grid);
+    return 0;
+}
+
 /* Everything before the first window. Returns 0, or -1 with s->msg set. */
 static int setup(fluid_run *s, fsi_participant *part)
 {
@@ -266,7 +325,11 @@ static int setup(fluid_run *s, fsi_participant *part)
 
     s->n_fixed = p->n;
     fluid_coupling_init(&s->coupling, p->n);
-    if (reserve_run_arrays(s) != 0) {
+    s->reorder_interval = fsi_case_get_int(c, ROLE, "reorder_interval", 200);
+    s->order = malloc((size_t)(p->n > 0 ? p->n : 1) * sizeof *s->order);
+    for (int i = 0; s->order && i < p->n; i++)
+        s->order[i] = i;
+    if (!s->order || reserve_run_arrays(s) != 0) {
         snprintf(s->msg, ms, "out of memory for %d fluid particles", p->n);
         return -1;
     }
@@ -299,7 +362,7 @@ static int setup(fluid_run *s, fsi_participant *part)
         snprintf(s->msg, ms, "cannot create the output file in %s", fsi_output_dir(part));
         return -1;
     }
-    if (write_static(s) != 0) {
+    if (write_static(s) != 0 || fsi_h5_set_point_order(s->out, s->order, s->n_fixed) != 0) {
         snprintf(s->msg, ms, "cannot write the static particle data");
         return -1;
     }
@@ -423,6 +486,13 @@ static int step(fluid_run *s, double dt)
 static int advance(fluid_run *s, double t0, double dt, int window)
 {
     s->t = t0;
+    if (s->reorder_interval > 0 && s->steps - s->reordered_at >= s->reorder_interval) {
+        if (reorder_particles(s) != 0) {
+            snprintf(s->msg, sizeof s->msg, "out of memory sorting %d particles", s->n_fixed);
+            return -1;
+        }
+        s->reordered_at = s->steps;
+    }
     if (evaluate(s) != 0)
         return -1;
     const double t_end = t0 + dt;

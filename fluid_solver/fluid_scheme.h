@@ -85,6 +85,11 @@ int fluid_scheme_write_fields(const fluid_scheme *s, fsi_h5_writer *out);
  * loop's "rates" phase; t must outlive the scheme. NULL stops it. */
 void fluid_scheme_use_timers(fluid_scheme *s, fsi_timers *t);
 
+/* The main loop permuted the particles (fluid_main.c, order for locality): state the
+ * scheme keeps by particle index between calls (e.g. candidate neighbour lists) must
+ * be rebuilt. */
+void fluid_scheme_particles_reordered(fluid_scheme *s);
+
 /* Pairs per particle of the last neighbour list (for the performance line). */
 long long fluid_scheme_pair_count(const fluid_scheme *s);
 

@@ -52,6 +52,12 @@ int fluid_wall_motion_init(fluid_wall_motion *w, const fluid_geometry *g,
     return 0;
 }
 
+void fluid_wall_motion_renumber(fluid_wall_motion *w, const int *new_index)
+{
+    for (int k = 0; k < w->n_moving; k++)
+        w->particle[k] = new_index[w->particle[k]];
+}
+
 void fluid_wall_motion_apply(fluid_wall_motion *w, double t, fluid_particles *p)
 {
     for (int k = 0; k < w->n_moving; k++) {

@@ -25,6 +25,9 @@ typedef struct {
 int fluid_wall_motion_init(fluid_wall_motion *w, const fluid_geometry *g,
                            const fluid_particles *p, char *msg, size_t msg_size);
 
+/* The particles were permuted: the particle at index i is now at new_index[i]. */
+void fluid_wall_motion_renumber(fluid_wall_motion *w, const int *new_index);
+
 /* Moving wall particles to their position, velocity and acceleration
  * (p->boundary_acceleration) at time t. */
 void fluid_wall_motion_apply(fluid_wall_motion *w, double t, fluid_particles *p);

@@ -55,6 +55,11 @@ void fluid_scheme_use_timers(fluid_scheme *s, fsi_timers *t)
         s->phase[k] = fsi_timer_index(t, phase_name[k]);
 }
 
+void fluid_scheme_particles_reordered(fluid_scheme *s)
+{
+    ulph_verlet_invalidate(&s->list);
+}
+
 static void phase_start(fluid_scheme *s, int phase)
 {
     if (s->timers)

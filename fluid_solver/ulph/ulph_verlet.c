@@ -129,6 +129,11 @@ static int still_valid(const ulph_verlet *v, const fluid_particles *p)
     return largest < limit2;
 }
 
+void ulph_verlet_invalidate(ulph_verlet *v)
+{
+    v->builds = 0;
+}
+
 int ulph_verlet_update(ulph_verlet *v, const fluid_particles *p, double support, double skin)
 {
     if (v->builds > 0 && v->n == p->n && v->support == support && v->skin == skin &&

@@ -45,7 +45,7 @@ typedef struct {
     int32_t *candidate;         /* J, J != I, |x_IJ| <= radius at the build */
     uint8_t *idle;              /* 1: an idle wall (above), empty row */
     double *x_built;            /* positions at the build */
-    long builds;                /* builds so far */
+    long builds;                /* builds since the last invalidation */
     fsi_neighbour_grid grid;    /* of the positions at the build */
     fsi_periodic periodic;      /* the periodic axes of the grid of the last build */
     int point_capacity;         /* allocated sizes */
@@ -61,6 +61,10 @@ void ulph_verlet_free(ulph_verlet *v);
  * hold p->n points or memory runs out. */
 int ulph_verlet_build(ulph_verlet *v, const fsi_neighbour_grid *grid, const fluid_particles *p,
                       double radius, int prune_idle_walls);
+
+/* Forgets the lists: the next ulph_verlet_update rebuilds them (the particles were
+ * permuted). */
+void ulph_verlet_invalidate(ulph_verlet *v);
 
 /* Keeps the lists when every particle is within skin / 2 of its position at the last
  * build with the same support and count, else rebuilds them (grid included) with
