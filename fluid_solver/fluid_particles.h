@@ -1,6 +1,8 @@
 /* The fluid's particles, structure of arrays, owned by the fluid main loop
- * (fluid_main.c, to come). Schemes (ulph/, ...) read them and update the fields they
- * own (density, pressure, volume); they never reallocate them.
+ * (fluid_main.c). Schemes (ulph/, ...) read them and update the fields they
+ * own (density, pressure, volume); they never reallocate them. The main loop may: the
+ * solid's particles at the tail change in number between windows (fluid_boundary.h),
+ * and the fixed part is sorted by cell now and then (its order is not stable; id is).
  * Vectors are particle-major: x[i * FSI_DIM + d].
  *
  * Three kinds of particle share the arrays (flags): fluid particles, fixed wall
