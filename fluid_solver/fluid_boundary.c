@@ -1,6 +1,8 @@
 /* Moving boundary particles fed from the coupling (fluid_boundary.h). */
 #include "fluid_boundary.h"
 
+#include "grow.h"
+
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -24,17 +26,12 @@ static int reserve(fluid_boundary *b, int n)
 {
     if (n <= b->capacity)
         return 0;
-    const size_t cap = (size_t)n + (size_t)n / 4 + 16;
-    double *x = realloc(b->x_start, cap * FSI_DIM * sizeof *x);
-    if (x)
-        b->x_start = x;
-    double *v = realloc(b->v_start, cap * FSI_DIM * sizeof *v);
-    if (v)
-        b->v_start = v;
-    double *a = realloc(b->acceleration, cap * FSI_DIM * sizeof *a);
-    if (a)
-        b->acceleration = a;
-    if (!x || !v || !a)
+    const size_t cap = fsi_grown_capacity((size_t)n);
+    int failed = 0;
+    b->x_start = fsi_grow(b->x_start, cap * FSI_DIM * sizeof *b->x_start, &failed);
+    b->v_start = fsi_grow(b->v_start, cap * FSI_DIM * sizeof *b->v_start, &failed);
+    b->acceleration = fsi_grow(b->acceleration, cap * FSI_DIM * sizeof *b->acceleration, &failed);
+    if (failed)
         return -1;
     b->capacity = (int)cap;
     return 0;

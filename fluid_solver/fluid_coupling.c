@@ -1,6 +1,8 @@
 /* The fluid's side of the coupling (fluid_coupling.h). */
 #include "fluid_coupling.h"
 
+#include "grow.h"
+
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -26,43 +28,22 @@ void fluid_coupling_free(fluid_coupling *c)
     fluid_coupling_init(c, n_fixed);
 }
 
-/* a (cap items of size bytes) resized to new_cap items, the new ones zero; NULL when
- * memory runs out (a is then unchanged). */
-static void *resize(void *a, int cap, int new_cap, size_t size)
-{
-    unsigned char *b = realloc(a, (size_t)new_cap * size);
-    if (b && new_cap > cap)
-        memset(b + (size_t)cap * size, 0, (size_t)(new_cap - cap) * size);
-    return b;
-}
-
-/* The capacity to grow to for n items (n itself when cap already holds it). */
-static int next_capacity(int cap, int n)
-{
-    return n <= cap ? cap : n + n / 4 + 16;
-}
-
 /* The loads of the last window for the particles the solid just sent. */
 static int publish(fluid_coupling *c, fsi_participant *part, const fsi_interface *solid,
                    char *msg, size_t msg_size)
 {
     const int m = solid->n;
-    const int cap = c->out_capacity, new_cap = next_capacity(cap, m);
-    if (new_cap > cap || !c->out_id) {
-        int32_t *id = resize(c->out_id, cap, new_cap, sizeof *id);
-        if (id)
-            c->out_id = id;
-        double *force = resize(c->out_force, cap, new_cap, FSI_DIM * sizeof *force);
-        if (force)
-            c->out_force = force;
-        double *pressure = resize(c->out_pressure, cap, new_cap, sizeof *pressure);
-        if (pressure)
-            c->out_pressure = pressure;
-        if (!id || !force || !pressure) {
+    if (m > c->out_capacity || !c->out_id) {
+        const size_t cap = fsi_grown_capacity((size_t)m);
+        int failed = 0;
+        c->out_id = fsi_grow(c->out_id, cap * sizeof *c->out_id, &failed);
+        c->out_force = fsi_grow(c->out_force, cap * FSI_DIM * sizeof *c->out_force, &failed);
+        c->out_pressure = fsi_grow(c->out_pressure, cap * sizeof *c->out_pressure, &failed);
+        if (failed) {
             snprintf(msg, msg_size, "out of memory for the loads of %d particles", m);
             return -1;
         }
-        c->out_capacity = new_cap;
+        c->out_capacity = (int)cap;
     }
     for (int k = 0; k < m; k++) {
         const int32_t id = solid->id[k];
@@ -93,15 +74,15 @@ int fluid_coupling_exchange(fluid_coupling *c, fsi_participant *part, fluid_part
         fluid_boundary_set(&c->boundary, p, &solid, rho0, msg, msg_size) != 0)
         return -1;
     c->t_window = t0;
-    const int new_cap = next_capacity(c->impulse_capacity, solid.n);
-    if (new_cap > c->impulse_capacity || !c->impulse) {
-        double *impulse = resize(c->impulse, c->impulse_capacity, new_cap, FSI_DIM * sizeof *impulse);
-        if (!impulse) {
+    if (solid.n > c->impulse_capacity || !c->impulse) {
+        const size_t cap = fsi_grown_capacity((size_t)solid.n);
+        int failed = 0;
+        c->impulse = fsi_grow(c->impulse, cap * FSI_DIM * sizeof *c->impulse, &failed);
+        if (failed) {
             snprintf(msg, msg_size, "out of memory for the loads of %d particles", solid.n);
             return -1;
         }
-        c->impulse = impulse;
-        c->impulse_capacity = new_cap;
+        c->impulse_capacity = (int)cap;
     }
     memset(c->impulse, 0, (size_t)solid.n * FSI_DIM * sizeof *c->impulse);
     c->n_windows += solid.n > 0;
@@ -119,13 +100,13 @@ int fluid_coupling_accumulate(fluid_coupling *c, const fluid_scheme *scheme,
     const fluid_boundary *b = &c->boundary;
     if (b->n == 0)
         return 0;
-    const int new_cap = next_capacity(c->force_capacity, p->n);
-    if (new_cap > c->force_capacity || !c->force) {
-        double *force = resize(c->force, c->force_capacity, new_cap, FSI_DIM * sizeof *force);
-        if (!force)
+    if (p->n > c->force_capacity || !c->force) {
+        const size_t cap = fsi_grown_capacity((size_t)p->n);
+        int failed = 0;
+        c->force = fsi_grow(c->force, cap * FSI_DIM * sizeof *c->force, &failed);
+        if (failed)
             return -1;
-        c->force = force;
-        c->force_capacity = new_cap;
+        c->force_capacity = (int)cap;
     }
     fluid_scheme_boundary_loads(scheme, p, c->force);
     for (int k = 0; k < b->n * FSI_DIM; k++)
@@ -140,20 +121,15 @@ int fluid_coupling_end_window(fluid_coupling *c, const fluid_particles *p, doubl
     for (int k = 0; k < b->n; k++)
         if (p->id[b->n_fixed + k] > max_id)
             max_id = p->id[b->n_fixed + k];
-    const int cap = c->id_capacity, new_cap = next_capacity(cap, max_id + 1);
-    if (new_cap > cap || !c->known) {
-        double *force = resize(c->force_by_id, cap, new_cap, FSI_DIM * sizeof *force);
-        if (force)
-            c->force_by_id = force;
-        double *pressure = resize(c->pressure_by_id, cap, new_cap, sizeof *pressure);
-        if (pressure)
-            c->pressure_by_id = pressure;
-        unsigned char *known = resize(c->known, cap, new_cap, 1);
-        if (known)
-            c->known = known;
-        if (!force || !pressure || !known)
+    if (max_id + 1 > c->id_capacity || !c->known) {
+        const size_t cap = fsi_grown_capacity((size_t)(max_id + 1));
+        int failed = 0;
+        c->force_by_id = fsi_grow(c->force_by_id, cap * FSI_DIM * sizeof *c->force_by_id, &failed);
+        c->pressure_by_id = fsi_grow(c->pressure_by_id, cap * sizeof *c->pressure_by_id, &failed);
+        c->known = fsi_grow(c->known, cap, &failed);
+        if (failed)
             return -1;
-        c->id_capacity = new_cap;
+        c->id_capacity = (int)cap;
     }
     memset(c->known, 0, (size_t)c->id_capacity);
     for (int k = 0; k < b->n; k++) {

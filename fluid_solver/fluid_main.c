@@ -27,6 +27,7 @@
 #include "fluid_periodic.h"
 #include "fluid_probes.h"
 #include "fluid_scheme.h"
+#include "grow.h"
 #include "fluid_wall_motion.h"
 #include "h5_output.h"
 #include "log.h"
@@ -223,17 +224,17 @@ static int reserve_run_arrays(fluid_run *s)
     const int n = s->p.n;
     if (n <= s->capacity)
         return 0;
-    const size_t cap = (size_t)n + (size_t)n / 4 + 16;
-    double **arrays[] = {&s->x0, &s->v0, &s->rho0, &s->drho, &s->accel, &s->grad_p};
-    const size_t width[] = {FSI_DIM, FSI_DIM, 1, 1, FSI_DIM, FSI_DIM};
-    for (size_t a = 0; a < sizeof arrays / sizeof arrays[0]; a++) {
-        double *grown = realloc(*arrays[a], cap * width[a] * sizeof *grown);
-        if (!grown)
-            return -1;
-        memset(grown + (size_t)s->capacity * width[a], 0,
-               (cap - (size_t)s->capacity) * width[a] * sizeof *grown);
-        *arrays[a] = grown;
-    }
+    /* No zeroing: every step writes these before it reads them. */
+    const size_t cap = fsi_grown_capacity((size_t)n), vec = cap * FSI_DIM * sizeof(double);
+    int failed = 0;
+    s->x0 = fsi_grow(s->x0, vec, &failed);
+    s->v0 = fsi_grow(s->v0, vec, &failed);
+    s->rho0 = fsi_grow(s->rho0, cap * sizeof(double), &failed);
+    s->drho = fsi_grow(s->drho, cap * sizeof(double), &failed);
+    s->accel = fsi_grow(s->accel, vec, &failed);
+    s->grad_p = fsi_grow(s->grad_p, vec, &failed);
+    if (failed)
+        return -1;
     s->capacity = (int)cap;
     return 0;
 }

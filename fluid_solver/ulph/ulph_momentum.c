@@ -57,8 +57,9 @@ typedef struct {
 } pair_context;
 
 /* The force density on fluid particle I from neighbour J (entry k of I's row); the
- * force on I is V_I times it. */
-static inline void pair_force(const pair_context *c, int i, int64_t k, double *out)
+ * force on I is V_I times it. trace_i = tr M_I, taken once per row by the caller. */
+static inline void pair_force(const pair_context *c, int i, int64_t k, double trace_i,
+                              double *out)
 {
     const ulph_operators *ops = c->ops;
     const fluid_particles *p = c->p;
@@ -87,7 +88,6 @@ static inline void pair_force(const pair_context *c, int i, int64_t k, double *o
     for (int d = 0; d < FSI_DIM; d++)
         out[d] = wv * f[d] + (pi_ij + tension) * ops->g[k * FSI_DIM + d];
     if (c->mu_laplacian > 0.0) {
-        const double trace_i = fsi_mat_trace(&ops->shape[(size_t)i * FSI_MAT_SIZE]);
         const double trace_j = fsi_mat_trace(&ops->shape[(size_t)j * FSI_MAT_SIZE]);
         const double lap = c->mu_laplacian * 4.0 * FSI_DIM * wv / (trace_i + trace_j);
         for (int d = 0; d < FSI_DIM; d++)
@@ -133,9 +133,10 @@ void ulph_momentum_rates(const ulph_operators *ops, const ulph_momentum_params *
         }
         drho_dt[i] = -p->density[i] * scratch->divergence[i];
         double force[FSI_DIM] = {0};
+        const double trace_i = fsi_mat_trace(&ops->shape[(size_t)i * FSI_MAT_SIZE]);
         for (int64_t k = ops->offset[i]; k < ops->offset[i + 1]; k++) {
             double f[FSI_DIM];
-            pair_force(&c, i, k, f);
+            pair_force(&c, i, k, trace_i, f);
             for (int d = 0; d < FSI_DIM; d++)
                 force[d] += f[d];
         }
@@ -166,7 +167,7 @@ void ulph_boundary_loads(const ulph_operators *ops, const ulph_momentum_params *
                 if (ops->neighbour[k] != b)
                     continue;
                 double f[FSI_DIM];
-                pair_force(&c, i, k, f);
+                pair_force(&c, i, k, fsi_mat_trace(&ops->shape[(size_t)i * FSI_MAT_SIZE]), f);
                 for (int d = 0; d < FSI_DIM; d++)
                     f_b[d] -= p->volume[i] * f[d];
                 break;

@@ -13,7 +13,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "ulph_grow.h"
+#include "grow.h"
 
 void ulph_operators_init(ulph_operators *ops)
 {
@@ -42,11 +42,11 @@ static int reserve_points(ulph_operators *ops, int n)
         return 0;
     const size_t cap = (size_t)n + (size_t)n / 4 + 16;
     int failed = 0;
-    ops->offset = ulph_grow(ops->offset, (cap + 1) * sizeof *ops->offset, &failed);
-    ops->shape = ulph_grow(ops->shape, cap * FSI_MAT_SIZE * sizeof *ops->shape, &failed);
-    ops->shape_inv = ulph_grow(ops->shape_inv, cap * FSI_MAT_SIZE * sizeof *ops->shape_inv,
+    ops->offset = fsi_grow(ops->offset, (cap + 1) * sizeof *ops->offset, &failed);
+    ops->shape = fsi_grow(ops->shape, cap * FSI_MAT_SIZE * sizeof *ops->shape, &failed);
+    ops->shape_inv = fsi_grow(ops->shape_inv, cap * FSI_MAT_SIZE * sizeof *ops->shape_inv,
                                &failed);
-    ops->flags = ulph_grow(ops->flags, cap * sizeof *ops->flags, &failed);
+    ops->flags = fsi_grow(ops->flags, cap * sizeof *ops->flags, &failed);
     if (failed)
         return -1;
     ops->point_capacity = (int)cap;
@@ -60,9 +60,9 @@ static int reserve_pairs(ulph_operators *ops, int64_t n_pairs)
         return 0;
     const size_t cap = (size_t)n_pairs + (size_t)n_pairs / 4 + 64;
     int failed = 0;
-    ops->neighbour = ulph_grow(ops->neighbour, cap * sizeof *ops->neighbour, &failed);
-    ops->w = ulph_grow(ops->w, cap * sizeof *ops->w, &failed);
-    ops->g = ulph_grow(ops->g, cap * FSI_DIM * sizeof *ops->g, &failed);
+    ops->neighbour = fsi_grow(ops->neighbour, cap * sizeof *ops->neighbour, &failed);
+    ops->w = fsi_grow(ops->w, cap * sizeof *ops->w, &failed);
+    ops->g = fsi_grow(ops->g, cap * FSI_DIM * sizeof *ops->g, &failed);
     if (failed)
         return -1;
     ops->pair_capacity = (int64_t)cap;

@@ -14,6 +14,7 @@
 #include <string.h>
 
 #include "fluid_scheme.h"
+#include "grow.h"
 #include "neighbour_grid.h"
 #include "small_tensor.h"
 #include "ulph_eos.h"
@@ -78,17 +79,14 @@ static int reserve(fluid_scheme *s, int n)
 {
     if (n <= s->capacity && s->velocity_for_viscosity)
         return 0;
-    const size_t cap = (size_t)n + (size_t)n / 4 + 16;
-    double *vv = realloc(s->velocity_for_viscosity, cap * FSI_DIM * sizeof *vv);
-    if (vv)
-        s->velocity_for_viscosity = vv;
-    double *filtered = realloc(s->filtered, cap * sizeof *filtered);
-    if (filtered)
-        s->filtered = filtered;
-    double *grad = realloc(s->density_gradient, cap * FSI_DIM * sizeof *grad);
-    if (grad)
-        s->density_gradient = grad;
-    if (!vv || !filtered || !grad || ulph_momentum_reserve(&s->scratch, (int)cap) != 0)
+    const size_t cap = fsi_grown_capacity((size_t)n);
+    int failed = 0;
+    s->velocity_for_viscosity = fsi_grow(s->velocity_for_viscosity,
+                                         cap * FSI_DIM * sizeof *s->velocity_for_viscosity, &failed);
+    s->filtered = fsi_grow(s->filtered, cap * sizeof *s->filtered, &failed);
+    s->density_gradient = fsi_grow(s->density_gradient,
+                                   cap * FSI_DIM * sizeof *s->density_gradient, &failed);
+    if (failed || ulph_momentum_reserve(&s->scratch, (int)cap) != 0)
         return -1;
     s->capacity = (int)cap;
     return 0;

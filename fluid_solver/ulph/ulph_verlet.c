@@ -4,7 +4,7 @@
 #include <math.h>
 #include <stdlib.h>
 
-#include "ulph_grow.h"
+#include "grow.h"
 #include "ulph_operators.h"
 
 void ulph_verlet_init(ulph_verlet *v)
@@ -29,14 +29,14 @@ static int reserve(ulph_verlet *v, int n, int64_t n_pairs)
     int failed = 0;
     if (!v->offset || n > v->point_capacity) {
         const size_t cap = (size_t)n + (size_t)n / 4 + 16;
-        v->offset = ulph_grow(v->offset, (cap + 1) * sizeof *v->offset, &failed);
-        v->idle = ulph_grow(v->idle, cap * sizeof *v->idle, &failed);
-        v->x_built = ulph_grow(v->x_built, cap * FSI_DIM * sizeof *v->x_built, &failed);
+        v->offset = fsi_grow(v->offset, (cap + 1) * sizeof *v->offset, &failed);
+        v->idle = fsi_grow(v->idle, cap * sizeof *v->idle, &failed);
+        v->x_built = fsi_grow(v->x_built, cap * FSI_DIM * sizeof *v->x_built, &failed);
         v->point_capacity = failed ? 0 : (int)cap;
     }
     if (!failed && (!v->candidate || n_pairs > v->pair_capacity)) {
         const size_t cap = (size_t)n_pairs + (size_t)n_pairs / 4 + 64;
-        v->candidate = ulph_grow(v->candidate, cap * sizeof *v->candidate, &failed);
+        v->candidate = fsi_grow(v->candidate, cap * sizeof *v->candidate, &failed);
         v->pair_capacity = failed ? 0 : (int64_t)cap;
     }
     return failed ? -1 : 0;
