@@ -32,6 +32,7 @@ typedef struct {
     int n, capacity;
     int32_t *id;
     double *position, *velocity, *acceleration, *volume, *pressure, *force;
+    double impedance;
 } interface_slot;
 
 struct fsi_participant {
@@ -160,6 +161,7 @@ static void take_fluid_load(fsi_participant *p, const fsi_fluid_load_t *m)
     memcpy(s->id, m->id, (size_t)m->n * sizeof(int32_t));
     memcpy(s->pressure, m->pressure, (size_t)m->n * sizeof(double));
     memcpy(s->force, m->force, (size_t)m->n_components * sizeof(double));
+    s->impedance = m->impedance;
 }
 
 static void take_welcome(fsi_participant *p, const fsi_welcome_t *m)
@@ -439,6 +441,7 @@ int fsi_write_interface(fsi_participant *p, const fsi_interface *d)
     m.id = d->id;
     m.pressure = d->pressure;
     m.force = d->force;
+    m.impedance = d->impedance;
     return fsi_bus_publish(p->bus, FSI_MSG_FLUID_LOAD, &m);
 }
 
@@ -469,6 +472,7 @@ int fsi_read_interface(fsi_participant *p, fsi_interface *d)
     d->volume = s->volume;
     d->pressure = s->pressure;
     d->force = s->force;
+    d->impedance = s->impedance;
     return 0;
 }
 

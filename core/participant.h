@@ -36,7 +36,9 @@ typedef struct fsi_participant fsi_participant;
 
 /* Interface particle data. The solid writes id, position, velocity, acceleration
  * (n * FSI_DIM, particle-major) and volume; the fluid writes id, pressure and force
- * (n * FSI_DIM) for the particles it received. */
+ * (n * FSI_DIM) for the particles it received, and its acoustic impedance rho0 c0
+ * (one number: what the solid needs to answer the fluid within a window,
+ * docs/coupling.md). */
 typedef struct {
     int n;
     int32_t *id;
@@ -46,6 +48,7 @@ typedef struct {
     double *volume;
     double *pressure;
     double *force;
+    double impedance;           /* [Pa s/m], fluid only */
 } fsi_interface;
 
 /* Joins the run. NULL name/case_path are taken from FSI_PARTICIPANT/FSI_CASE.

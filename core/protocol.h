@@ -4,7 +4,7 @@
 #define FSI_PROTOCOL_H
 
 /* Bump when proto/fsi.lcm or the rules below change incompatibly. */
-#define FSI_PROTOCOL_VERSION 1
+#define FSI_PROTOCOL_VERSION 2
 
 /* Message kinds; each travels on its own channel (fsi_msg_channel). */
 typedef enum {

@@ -136,7 +136,7 @@ int main(void)
     int t_solve = fsi_timer_index(&timers, "solid_advance");
     int t_output = fsi_timer_index(&timers, "output");
     fsi_interface state = {s.n, s.id, s.position, s.velocity, s.acceleration, s.volume,
-                           NULL, NULL};
+                           NULL, NULL, 0.0};
     fsi_interface loads;
 
     while (fsi_ongoing(p)) {

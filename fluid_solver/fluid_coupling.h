@@ -1,16 +1,16 @@
 /* The fluid's side of the coupling (000 §3): the solid's interface particles become the
  * moving boundary particles of the fluid (fluid_boundary.h) at the start of every
- * window, and the force the fluid exerts on each of them goes back to the solid.
+ * window, and the force the fluid exerts on each of them over the window goes back to
+ * the solid at its end (serial staggering, docs/protocol.md: the solid then advances
+ * the same window with these loads).
  *
  * Loads: the force on a boundary particle is the exact reaction of the fluid's pair
  * terms (fluid_scheme_boundary_loads), averaged over the window as an impulse: each
  * step contributes h F(t_n + h/2), the midpoint rates that the predictor-corrector
  * (000 Eq. 56) advances the fluid with, so the solid receives exactly the momentum the
- * fluid lost to it. The protocol exchanges both sides' data at the window's start, so
- * the loads published at t_k are those of the window that ended at t_k (explicit,
- * conventional serial staggering), matched to the solid's particles by id; a particle
- * the fluid has not seen yet gets zero. The pressure sent is the boundary particle's
- * interpolated pressure (000 Eq. 52) at the end of that window. */
+ * fluid lost to it. A window of length zero (window 0) sends the force at its instant.
+ * The pressure sent is the boundary particle's interpolated pressure (000 Eq. 52) at
+ * the last evaluation of the window. */
 #ifndef FSI_FLUID_COUPLING_H
 #define FSI_FLUID_COUPLING_H
 
@@ -28,26 +28,23 @@ typedef struct {
     double *impulse;            /* per boundary particle, FSI_DIM each: sum h F so far */
     double *force;              /* scratch, every particle, FSI_DIM each */
     int force_capacity, impulse_capacity;
-    /* The last completed window's loads by solid id. */
-    double *force_by_id, *pressure_by_id;
-    unsigned char *known;
-    int id_capacity;
-    /* What fluid_coupling_exchange publishes. */
+    /* What fluid_coupling_publish sends. */
     int32_t *out_id;
     double *out_force, *out_pressure;
     int out_capacity;
     int n_windows;              /* windows with a boundary */
+    double impedance;           /* rho0 c0 [Pa s/m] */
 } fluid_coupling;
 
-/* An empty coupling behind the n_fixed fluid and wall particles of the case. */
-void fluid_coupling_init(fluid_coupling *c, int n_fixed);
+/* An empty coupling behind the n_fixed fluid and wall particles of the case, for a
+ * fluid of acoustic impedance rho0 c0 [Pa s/m] (sent with the loads). */
+void fluid_coupling_init(fluid_coupling *c, int n_fixed, double impedance);
 void fluid_coupling_free(fluid_coupling *c);
 
-/* Start of window [t0, ...]: reads the solid's state, publishes the loads of the last
- * window for the particles it sent, and puts them in the tail of p. Returns 0, or -1
- * with msg. p->n may change. */
-int fluid_coupling_exchange(fluid_coupling *c, fsi_participant *part, fluid_particles *p,
-                            double rho0, double t0, char *msg, size_t msg_size);
+/* Start of window [t0, ...]: reads the solid's state at t0 and puts its particles in
+ * the tail of p. Returns 0, or -1 with msg. p->n may change. */
+int fluid_coupling_receive(fluid_coupling *c, fsi_participant *part, fluid_particles *p,
+                           double rho0, double t0, char *msg, size_t msg_size);
 
 /* The boundary particles at time t of the current window. */
 void fluid_coupling_move(const fluid_coupling *c, fluid_particles *p, double t);
@@ -57,8 +54,10 @@ void fluid_coupling_move(const fluid_coupling *c, fluid_particles *p, double t);
 int fluid_coupling_accumulate(fluid_coupling *c, const fluid_scheme *scheme,
                               const fluid_particles *p, double h);
 
-/* End of a window of length dt: its mean loads (and the boundary pressures now) become
- * the loads the next exchange publishes. 0, or -1 when memory runs out. */
-int fluid_coupling_end_window(fluid_coupling *c, const fluid_particles *p, double dt);
+/* End of a window of length dt: publishes its mean loads on every particle the solid
+ * sent, in the order it sent them. 0, or -1 with msg. */
+int fluid_coupling_publish(fluid_coupling *c, fsi_participant *part,
+                           const fluid_scheme *scheme, const fluid_particles *p, double dt,
+                           char *msg, size_t msg_size);
 
 #endif

@@ -5,12 +5,13 @@
  *
  *   setup   blocks and walls -> particles, the fluid's properties (c0 from 000 Eq. 7
  *           when not given), the initial pressure, the scheme, probes, output file
- *   window  read the solid's state into the moving boundary particles and publish the
- *           loads of the last window (fluid_coupling.h; empty in a fluid-only run),
- *           sub-cycle the predictor-corrector of 000 Eq. 56 with the step chosen at
- *           every step from the stable step, check health after every step and the
- *           energy after every window, probes, output, propose DBL_MAX (sub-cycling:
- *           the fluid does not limit the window)
+ *   window  read the solid's state into the moving boundary particles
+ *           (fluid_coupling.h; empty in a fluid-only run), sub-cycle the
+ *           predictor-corrector of 000 Eq. 56 with the step chosen at every step from
+ *           the stable step, check health after every step and the energy after every
+ *           window, publish the window's loads on the solid, probes, output; propose
+ *           the stable step when coupled (the solid sub-cycles inside the fluid's
+ *           step), DBL_MAX alone (the fluid sub-cycles any window)
  *
  * A failure anywhere stops everyone with fsi_abort naming what, the particle, where and
  * when; nothing non-finite is ever written or sent. */
@@ -69,6 +70,7 @@ typedef struct {
     fsi_timers timers;
     int t_rates, t_integrate, t_exchange, t_output;
     long steps;
+    double stable_dt;           /* the stable step at the last evaluation [s] */
     int capacity;       /* particles x0 .. grad_p hold */
     int *order;         /* original index (output row) of the particle at each index of
                          * the fixed part; they are sorted by cell now and then */
@@ -325,7 +327,7 @@ static int setup(fluid_run *s, fsi_participant *part)
     s->energy_limit = fsi_case_get_real(c, ROLE, "energy_growth_limit", 2.0);
 
     s->n_fixed = p->n;
-    fluid_coupling_init(&s->coupling, p->n);
+    fluid_coupling_init(&s->coupling, p->n, pr->density * pr->sound_speed);
     s->reorder_interval = fsi_case_get_int(c, ROLE, "reorder_interval", 200);
     s->order = malloc((size_t)(p->n > 0 ? p->n : 1) * sizeof *s->order);
     for (int i = 0; s->order && i < p->n; i++)
@@ -499,11 +501,14 @@ static int advance(fluid_run *s, double t0, double dt, int window)
     const double t_end = t0 + dt;
     for (long j = 0;; j++) {
         const double remaining = t_end - s->t;
-        if (!(remaining > 1e-12 * dt))
+        if (j > 0 && !(remaining > 1e-12 * dt))
             break;
         if (j > 0 && evaluate(s) != 0)
             return -1;
         const double stable = fluid_scheme_stable_dt(s->scheme, &s->p, max_acceleration(s));
+        s->stable_dt = stable;
+        if (!(remaining > 1e-12 * dt))
+            break;      /* a window of length zero: only the stable step */
         if (!(stable > 0.0) || !isfinite(stable) || j >= MAX_SUBSTEPS ||
             remaining / stable > (double)MAX_SUBSTEPS) {
             snprintf(s->msg, sizeof s->msg, "the stable step is %g s at t = %.9g s (window "
@@ -521,10 +526,6 @@ static int advance(fluid_run *s, double t0, double dt, int window)
             return -1;
         if (m == 1)
             s->t = t_end;
-    }
-    if (fluid_coupling_end_window(&s->coupling, &s->p, dt) != 0) {
-        snprintf(s->msg, sizeof s->msg, "out of memory for the loads on the solid");
-        return -1;
     }
     return 0;
 }
@@ -592,13 +593,12 @@ static int write_frame(fluid_run *s, int frame, double t, long window)
     return rc ? -1 : fsi_h5_end_frame(s->out);
 }
 
-/* Reads the solid's state (its particles become the moving boundary, 000 §3) and
- * publishes the loads of the last window on them (fluid_coupling.h). A fluid-only run
- * exchanges empty interfaces. */
-static int exchange(fluid_run *s, fsi_participant *part, double t0)
+/* Reads the solid's state at the window's start: its particles become the moving
+ * boundary (000 §3, fluid_coupling.h). A fluid-only run reads an empty interface. */
+static int receive(fluid_run *s, fsi_participant *part, double t0)
 {
-    if (fluid_coupling_exchange(&s->coupling, part, &s->p, s->props.density, t0, s->msg,
-                                sizeof s->msg) != 0)
+    if (fluid_coupling_receive(&s->coupling, part, &s->p, s->props.density, t0, s->msg,
+                               sizeof s->msg) != 0)
         return -1;
     if (reserve_run_arrays(s) != 0) {
         snprintf(s->msg, sizeof s->msg, "out of memory for %d particles", s->p.n);
@@ -646,7 +646,7 @@ int main(void)
         int window = fsi_window_index(part);
 
         fsi_timer_start(&s.timers, s.t_exchange);
-        int rc = exchange(&s, part, t0);
+        int rc = receive(&s, part, t0);
         fsi_timer_stop(&s.timers, s.t_exchange);
         if (rc != 0) {
             fsi_abort(part, "window %d: %s", window, s.msg);
@@ -654,6 +654,14 @@ int main(void)
         }
         if (advance(&s, t0, dt, window) != 0 || check_health(&s, t0 + dt, window) != 0) {
             fsi_abort(part, "%s", s.msg);
+            break;
+        }
+        fsi_timer_start(&s.timers, s.t_exchange);
+        rc = fluid_coupling_publish(&s.coupling, part, s.scheme, &s.p, dt, s.msg,
+                                    sizeof s.msg);
+        fsi_timer_stop(&s.timers, s.t_exchange);
+        if (rc != 0) {
+            fsi_abort(part, "window %d: %s", window, s.msg);
             break;
         }
         int frame = fsi_output_frame(part);
@@ -676,7 +684,9 @@ int main(void)
                 break;
             }
         }
-        fsi_advance(part, DBL_MAX);   /* sub-cycling: the fluid never limits the window */
+        /* Coupled, the window is the fluid's step: the solid's motion it sees and the
+         * loads it returns are then as fresh as the fluid's own state. */
+        fsi_advance(part, fsi_coupled(part) && s.stable_dt > 0.0 ? s.stable_dt : DBL_MAX);
     }
     if (s.scheme) {
         double vmax = 0.0;

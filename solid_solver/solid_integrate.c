@@ -42,6 +42,11 @@ void solid_mirror_forces(const solid_particles *p, double *internal)
     }
 }
 
+static double damping_of(const solid_integrator *in, int i)
+{
+    return in->damping + (in->particle_damping ? in->particle_damping[i] : 0.0);
+}
+
 static int is_material(const solid_particles *p, int i)
 {
     return !(p->flags[i] & SOLID_MIRRORED);
@@ -56,11 +61,10 @@ void solid_acceleration(solid_particles *p, const solid_forces *f, const solid_i
                 a[d] = 0.0;
             continue;
         }
-        double inv_m = 1.0 / mass_of(p, i);
+        double inv_m = 1.0 / mass_of(p, i), c = damping_of(in, i);
         for (int d = 0; d < FSI_DIM; d++) {
             int k = i * FSI_DIM + d;
-            a[d] = (f->internal[k] + f->external[k]) * inv_m + in->gravity[d] -
-                   in->damping * p->v[k];
+            a[d] = (f->internal[k] + f->external[k]) * inv_m + in->gravity[d] - c * p->v[k];
         }
     }
     follow_partners(p);
@@ -89,7 +93,6 @@ int solid_verlet_kick(solid_particles *p, const solid_forces *f, double h,
                       const solid_integrator *in, const double *x_prev, double *work,
                       solid_fault *fault)
 {
-    double shrink = 1.0 / (1.0 + 0.5 * in->damping * h);
     double max_step2 = in->max_step * in->max_step;
     double dw = 0.0;
     int bad = -1;
@@ -101,14 +104,15 @@ int solid_verlet_kick(solid_particles *p, const solid_forces *f, double h,
                 p->v[i * FSI_DIM + d] = p->a[i * FSI_DIM + d] = 0.0;
             continue;
         }
-        double m = mass_of(p, i), inv_m = 1.0 / m, step2 = 0.0;
+        double m = mass_of(p, i), inv_m = 1.0 / m, step2 = 0.0, c = damping_of(in, i);
+        double shrink = 1.0 / (1.0 + 0.5 * c * h);
         int finite = 1;
         for (int d = 0; d < FSI_DIM; d++) {
             int k = i * FSI_DIM + d;
             double force = f->internal[k] + f->external[k];
             double v = (p->v[k] + 0.5 * h * (force * inv_m + in->gravity[d])) * shrink;
             p->v[k] = v;
-            p->a[k] = force * inv_m + in->gravity[d] - in->damping * v;
+            p->a[k] = force * inv_m + in->gravity[d] - c * v;
             double dx = p->x[k] - x_prev[k];
             step2 += dx * dx;
             double fe = f->external_prev ? 0.5 * (f->external_prev[k] + f->external[k])

@@ -24,6 +24,9 @@
 
 typedef struct {
     double damping;             /* c [1/s] */
+    /* Per particle, added to c (NULL: none): the fluid's impedance on the interface
+     * particles (solid_interface.h) [1/s]. */
+    const double *particle_damping;
     double gravity[FSI_DIM];    /* g [m/s^2] */
     /* Largest displacement of a point in one sub-step before it counts as unstable
      * [m]; the main loop uses one spacing: a stable explicit step moves points by

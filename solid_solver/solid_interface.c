@@ -17,8 +17,12 @@ int solid_interface_init(solid_interface_buffers *b, int n_particles)
     b->state.velocity = malloc(v * sizeof(double));
     b->state.acceleration = malloc(v * sizeof(double));
     b->state.volume = malloc(n * sizeof(double));
+    b->x_window = malloc(v * sizeof(double));
+    b->v_mean = malloc(v * sizeof(double));
+    b->a_mean = malloc(v * sizeof(double));
     if (!b->surface || !b->received || !b->state.id || !b->state.position ||
-        !b->state.velocity || !b->state.acceleration || !b->state.volume) {
+        !b->state.velocity || !b->state.acceleration || !b->state.volume || !b->x_window ||
+        !b->v_mean || !b->a_mean) {
         solid_interface_free(b);
         return -1;
     }
@@ -35,24 +39,45 @@ void solid_interface_free(solid_interface_buffers *b)
     free(b->state.velocity);
     free(b->state.acceleration);
     free(b->state.volume);
+    free(b->x_window);
+    free(b->v_mean);
+    free(b->a_mean);
     memset(b, 0, sizeof *b);
 }
 
-int solid_interface_gather(solid_interface_buffers *b, const solid_particles *p)
+int solid_interface_gather(solid_interface_buffers *b, const solid_particles *p,
+                           double dt_last)
 {
+    const int n_all = p->n < b->capacity ? p->n : b->capacity;
+    const int have_mean = b->have_x_window && dt_last > 0.0;
+    const int have_change = have_mean && b->dt_mean > 0.0;
+    const double dt_change = have_change ? 0.5 * (dt_last + b->dt_mean) : 1.0;
     int n = 0;
-    for (int i = 0; i < p->n && i < b->capacity; i++) {
+    for (int i = 0; i < n_all; i++) {
+        double v_mean[FSI_DIM], a_mean[FSI_DIM];
+        for (int d = 0; d < FSI_DIM; d++) {
+            const int k = i * FSI_DIM + d;
+            v_mean[d] = have_mean ? (p->x[k] - b->x_window[k]) / dt_last : p->v[k];
+            a_mean[d] = have_change ? (v_mean[d] - b->v_mean[k]) / dt_change
+                        : have_mean ? 0.0
+                                    : p->a[k];
+            b->x_window[k] = p->x[k];
+            b->v_mean[k] = v_mean[d];
+            b->a_mean[k] = a_mean[d];
+        }
         if (!b->surface[i])
             continue;
         b->state.id[n] = p->id[i];
         for (int d = 0; d < FSI_DIM; d++) {
             b->state.position[n * FSI_DIM + d] = p->x[i * FSI_DIM + d];
-            b->state.velocity[n * FSI_DIM + d] = p->v[i * FSI_DIM + d];
-            b->state.acceleration[n * FSI_DIM + d] = p->a[i * FSI_DIM + d];
+            b->state.velocity[n * FSI_DIM + d] = v_mean[d];
+            b->state.acceleration[n * FSI_DIM + d] = a_mean[d];
         }
         b->state.volume[n] = p->volume[i];
         n++;
     }
+    b->have_x_window = 1;
+    b->dt_mean = have_mean ? dt_last : 0.0;
     b->state.n = n;
     return n;
 }
@@ -64,13 +89,13 @@ int solid_interface_take(solid_interface_buffers *b, const fsi_interface *in,
     memset(force, 0, (size_t)p->n * FSI_DIM * sizeof *force);
     if (pressure)
         memset(pressure, 0, (size_t)p->n * sizeof *pressure);
+    memset(b->received, 0, (size_t)b->capacity);
     if (in->n <= 0)
         return 0;
     if (!in->id || !in->force) {
         snprintf(msg, msg_size, "the fluid sent %d loads without ids or forces", in->n);
         return -1;
     }
-    memset(b->received, 0, (size_t)b->capacity);
     for (int j = 0; j < in->n; j++) {
         int32_t id = in->id[j];
         if (id < 0 || id >= p->n || id >= b->capacity) {
@@ -101,4 +126,15 @@ int solid_interface_take(solid_interface_buffers *b, const fsi_interface *in,
             pressure[id] = in->pressure[j];
     }
     return 0;
+}
+
+void solid_interface_damping(const solid_interface_buffers *b, const solid_particles *p,
+                             double impedance, double *damping)
+{
+    const double area = pow(p->spacing, FSI_DIM - 1);
+    const int n_all = p->n < b->capacity ? p->n : b->capacity;
+    for (int i = 0; i < n_all; i++)
+        damping[i] = b->received[i] && impedance > 0.0
+                         ? impedance * area / (p->density[i] * p->volume[i])
+                         : 0.0;
 }

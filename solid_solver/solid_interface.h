@@ -23,13 +23,32 @@ typedef struct {
     uint8_t *received;          /* per particle: a load arrived (duplicate check) */
     fsi_interface state;        /* what is published: n, id, position, velocity,
                                  * acceleration, volume (pressure, force NULL) */
+    /* Window means (solid_interface_gather): every particle's position at the last
+     * window's start and its mean velocity over the window before, FSI_DIM each. */
+    double *x_window, *v_mean, *a_mean;
+    int have_x_window;          /* x_window holds a gather's positions */
+    double dt_mean;             /* the window v_mean is over [s]; 0: no mean yet */
 } solid_interface_buffers;
 
 int solid_interface_init(solid_interface_buffers *b, int n_particles);
 void solid_interface_free(solid_interface_buffers *b);
 
-/* Copies the particles with b->surface[i] set into b->state; returns its n. */
-int solid_interface_gather(solid_interface_buffers *b, const solid_particles *p);
+/* Copies the particles with b->surface[i] set into b->state at the start of a window
+ * that follows one of length dt_last (0 for the first); returns its n.
+ *
+ * Position is the particle's. Velocity and acceleration are the means over the
+ * windows that ended now, not the instants: the fluid samples the solid once per
+ * window, and the solid's particle modes are far faster than that (their period is
+ * ~ 2 dx / c_solid, micro-seconds in a metal plate), so an instantaneous sample is
+ * aliased noise that the fluid's boundary condition (000 Eqs. 50-52) would turn into
+ * pressure noise and feed back as load. The mean velocity (x_k - x_{k-1}) / dt_{k-1}
+ * is what carries the body to its next position; the mean acceleration is the change
+ * of the last two mean velocities over the time between their midpoints. Until a
+ * window has passed the instants are sent, and the acceleration is 0 until two have
+ * (both lag the instant by half a window, which the windows' brevity against the
+ * body's own modes makes harmless). */
+int solid_interface_gather(solid_interface_buffers *b, const solid_particles *p,
+                           double dt_last);
 
 /* Takes the fluid's loads: force (n_particles * FSI_DIM) and pressure (n_particles)
  * are zeroed, then set for every id in 'in'. Returns 0, or -1 with a message naming
@@ -37,5 +56,23 @@ int solid_interface_gather(solid_interface_buffers *b, const solid_particles *p)
 int solid_interface_take(solid_interface_buffers *b, const fsi_interface *in,
                          const solid_particles *p, double *force, double *pressure, char *msg,
                          size_t msg_size);
+
+/* The fluid's answer within a window (docs/coupling.md). The fluid's load F_k is held
+ * over the window while the solid sub-cycles, computed for the motion the solid sent,
+ * u(t) = v_mean + a_mean (t - t_k). Where the solid departs from that motion the fluid
+ * would have pushed back at once with its acoustic impedance z = rho0 c0: a wall
+ * moving into still water at v raises the pressure by z v. The solid applies that
+ * answer itself,
+ *     F(t) = F_k - z A (v(t) - u(t)),
+ * on every particle that carries a load (A = spacing^(dim-1), the face one particle
+ * presents). Without it the held load lags the solid's motion by up to a window, and
+ * every mode that turns by more than a quarter period within a window is pumped
+ * (the load works against the velocity one window late): a plate's short bending
+ * waves grew without bound. The term vanishes when the solid follows u, i.e. as the
+ * window shrinks, and only ever removes energy. damping[i] = z A / m_i [1/s] (0 for
+ * particles without a load); the integrator treats -c v implicitly and the main loop
+ * adds m c u(t) to the external force. */
+void solid_interface_damping(const solid_interface_buffers *b, const solid_particles *p,
+                             double impedance, double *damping);
 
 #endif

@@ -54,6 +54,8 @@ typedef struct {
     solid_integrator integrator;
     double safety, energy_limit;
     double *f_int, *f_ext, *f_ext_prev, *f_fluid, *p_fluid, *x_prev, *scratch;
+    double *interface_damping;      /* per particle: z A / m [1/s] (solid_interface.h) */
+    double t_window;                /* start of the current window [s] */
     /* energy check */
     double energy0, work, work_in, energy_floor;
     double box_min[FSI_DIM], box_max[FSI_DIM];
@@ -92,6 +94,7 @@ static void free_run(solid_run *s)
     free(s->f_fluid);
     free(s->p_fluid);
     free(s->x_prev);
+    free(s->interface_damping);
     free(s->scratch);
 }
 
@@ -144,8 +147,10 @@ static int setup(solid_run *s, fsi_participant *part)
     s->p_fluid = new_vector(p->n, 1);
     s->x_prev = new_vector(p->n, FSI_DIM);
     s->scratch = new_vector(p->n, FSI_DIM);
+    s->interface_damping = new_vector(p->n, 1);
+    s->integrator.particle_damping = s->interface_damping;
     if (!s->f_int || !s->f_ext || !s->f_ext_prev || !s->f_fluid || !s->p_fluid ||
-        !s->x_prev || !s->scratch || solid_interface_init(&s->iface, p->n) != 0) {
+        !s->x_prev || !s->scratch || !s->interface_damping || solid_interface_init(&s->iface, p->n) != 0) {
         snprintf(s->msg, ms, "out of memory for %d solid particles", p->n);
         return -1;
     }
@@ -211,18 +216,30 @@ static int setup(solid_run *s, fsi_participant *part)
 /* f_ext = prescribed loads at time t + the fluid's load of this window. */
 static void external_forces(solid_run *s, double t, double *f_ext)
 {
-    size_t nv = (size_t)s->p.n * FSI_DIM;
+    const solid_particles *p = &s->p;
+    size_t nv = (size_t)p->n * FSI_DIM;
     memcpy(f_ext, s->f_fluid, nv * sizeof *f_ext);
+    const double tau = t - s->t_window;
+    for (int i = 0; i < p->n; i++) {
+        const double c = s->interface_damping[i];
+        if (c == 0.0)
+            continue;
+        const double m = p->density[i] * p->volume[i];
+        for (int d = 0; d < FSI_DIM; d++) {
+            const int k = i * FSI_DIM + d;
+            f_ext[k] += m * c * (s->iface.v_mean[k] + s->iface.a_mean[k] * tau);
+        }
+    }
     solid_loads_add(&s->loads, t, f_ext);
 }
 
 /* Publishes the surface state at t_k and takes the fluid's loads of this window. */
-static int exchange(solid_run *s, fsi_participant *part)
+static int exchange(solid_run *s, fsi_participant *part, double dt_last)
 {
     memset(s->iface.surface, 0, (size_t)s->iface.capacity);
     if (fsi_coupled(part)) {
         solid_model_surface(s->model, &s->p, s->iface.surface);
-        solid_interface_gather(&s->iface, &s->p);
+        solid_interface_gather(&s->iface, &s->p, dt_last);
     } else {
         s->iface.state.n = 0;
     }
@@ -233,8 +250,11 @@ static int exchange(solid_run *s, fsi_participant *part)
     }
     fsi_interface loads;
     fsi_read_interface(part, &loads);
-    return solid_interface_take(&s->iface, &loads, &s->p, s->f_fluid, s->p_fluid, s->msg,
-                                sizeof s->msg);
+    if (solid_interface_take(&s->iface, &loads, &s->p, s->f_fluid, s->p_fluid, s->msg,
+                             sizeof s->msg) != 0)
+        return -1;
+    solid_interface_damping(&s->iface, &s->p, loads.impedance, s->interface_damping);
+    return 0;
 }
 
 /* Velocity Verlet over one window [t0, t0 + dt] in equal sub-steps. */
@@ -380,12 +400,15 @@ int main(void)
     s.t_exchange = fsi_timer_index(&s.timers, "exchange");
     s.t_output = fsi_timer_index(&s.timers, "output");
 
+    double dt_last = 0.0;
     while (fsi_ongoing(part)) {
         double dt = fsi_window(part), t0 = fsi_time(part);
         int window = fsi_window_index(part);
 
         fsi_timer_start(&s.timers, s.t_exchange);
-        int rc = exchange(&s, part);
+        s.t_window = t0;
+        int rc = exchange(&s, part, dt_last);
+        dt_last = dt;
         fsi_timer_stop(&s.timers, s.t_exchange);
         if (rc != 0) {
             fsi_abort(part, "window %d: %s", window, s.msg);

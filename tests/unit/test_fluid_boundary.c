@@ -61,7 +61,7 @@ static void make_message(solid_message *s, int m, int first_id)
             s->a[k * FSI_DIM + d] = -9.81 * (d == 1) + 2.0 * k;
         }
     }
-    s->msg = (fsi_interface){m, s->id, s->x, s->v, s->a, s->volume, NULL, NULL};
+    s->msg = (fsi_interface){m, s->id, s->x, s->v, s->a, s->volume, NULL, NULL, 0.0};
 }
 
 int main(void)

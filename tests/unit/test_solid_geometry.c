@@ -454,7 +454,7 @@ static void test_integration(void)
     solid_particles p = {2, 0.01, id, x0, x, v, a, vol, rho, flags, blk, NULL};
     double zero[2 * FSI_DIM] = {0};
     solid_forces f = {zero, zero, zero};
-    solid_integrator in = {0.0, {0.0, -9.81}, 0.01};
+    solid_integrator in = {.damping = 0.0, .gravity = {0.0, -9.81}, .max_step = 0.01};
 
     /* Free fall: Verlet is exact for constant acceleration. */
     solid_acceleration(&p, &f, &in);
@@ -522,7 +522,7 @@ static void test_interface(void)
     solid_interface_buffers b;
     CHECK(solid_interface_init(&b, 3) == 0, "init");
     b.surface[0] = b.surface[2] = 1;
-    CHECK(solid_interface_gather(&b, &p) == 2 && b.state.id[1] == 2 &&
+    CHECK(solid_interface_gather(&b, &p, 0.0) == 2 && b.state.id[1] == 2 &&
               b.state.position[FSI_DIM] == 2.0 && b.state.volume[1] == 3.0,
           "gather");
     double force[3 * FSI_DIM], pressure[3];
@@ -530,7 +530,7 @@ static void test_interface(void)
     double f[2 * FSI_DIM] = {0}, pr[2] = {5.0, 6.0};
     f[1] = -1.0;
     f[FSI_DIM + 1] = -2.0;
-    fsi_interface in = {2, ids, NULL, NULL, NULL, NULL, pr, f};
+    fsi_interface in = {2, ids, NULL, NULL, NULL, NULL, pr, f, 0.0};
     char msg[256] = "";
     CHECK(solid_interface_take(&b, &in, &p, force, pressure, msg, sizeof msg) == 0, "%s", msg);
     CHECK(force[2 * FSI_DIM + 1] == -1.0 && force[1] == -2.0 && force[FSI_DIM + 1] == 0.0 &&
