@@ -3,6 +3,7 @@
 
 #include "grow.h"
 
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -11,6 +12,7 @@ void fluid_coupling_init(fluid_coupling *c, int n_fixed, double impedance)
 {
     memset(c, 0, sizeof *c);
     fluid_boundary_init(&c->boundary, n_fixed);
+    fsi_grid_init(&c->solid_grid);
     c->impedance = impedance;
 }
 
@@ -19,6 +21,7 @@ void fluid_coupling_free(fluid_coupling *c)
     const int n_fixed = c->boundary.n_fixed;
     const double impedance = c->impedance;
     fluid_boundary_free(&c->boundary);
+    fsi_grid_free(&c->solid_grid);
     free(c->impulse);
     free(c->force);
     free(c->out_id);
@@ -84,8 +87,14 @@ int fluid_coupling_accumulate(fluid_coupling *c, const fluid_scheme *scheme,
         return 0;
     if (boundary_forces(c, scheme, p) != 0)
         return -1;
-    for (int k = 0; k < b->n * FSI_DIM; k++)
-        c->impulse[k] += h * c->force[b->n_fixed * FSI_DIM + k];
+    const double *f = c->force + (size_t)b->n_fixed * FSI_DIM;
+    const double *v = p->v + (size_t)b->n_fixed * FSI_DIM;
+    double power = 0.0;
+    for (int k = 0; k < b->n * FSI_DIM; k++) {
+        c->impulse[k] += h * f[k];
+        power -= f[k] * v[k];
+    }
+    c->work_on_fluid += h * power;
     return 0;
 }
 
@@ -127,4 +136,43 @@ int fluid_coupling_publish(fluid_coupling *c, fsi_participant *part,
         return -1;
     }
     return 0;
+}
+
+int fluid_coupling_count_inside(fluid_coupling *c, const fluid_particles *p, int *first)
+{
+    const fluid_boundary *b = &c->boundary;
+    *first = -1;
+    if (b->n == 0)
+        return 0;
+    const double r = 0.5 * p->spacing;
+    const double *xb = p->x + (size_t)b->n_fixed * FSI_DIM;
+    if (fsi_grid_build(&c->solid_grid, xb, b->n, r) != 0)
+        return -1;
+    /* Only fluid particles in the solid's bounding box (grown by r) can be inside. */
+    double lo[FSI_DIM], hi[FSI_DIM];
+    for (int d = 0; d < FSI_DIM; d++) {
+        lo[d] = hi[d] = xb[d];
+        for (int k = 1; k < b->n; k++) {
+            lo[d] = fmin(lo[d], xb[k * FSI_DIM + d]);
+            hi[d] = fmax(hi[d], xb[k * FSI_DIM + d]);
+        }
+        lo[d] -= r;
+        hi[d] += r;
+    }
+    int count = 0;
+    for (int i = 0; i < b->n_fixed; i++) {
+        if (!(p->flags[i] & FLUID_PARTICLE_FLUID))
+            continue;
+        const double *x = &p->x[i * FSI_DIM];
+        int in_box = 1;
+        for (int d = 0; d < FSI_DIM; d++)
+            in_box &= x[d] >= lo[d] && x[d] <= hi[d];
+        int j;
+        if (in_box && fsi_grid_neighbours(&c->solid_grid, x, r, &j, NULL, 1) > 0) {
+            if (count == 0)
+                *first = i;
+            count++;
+        }
+    }
+    return count;
 }

@@ -18,6 +18,7 @@
 #include <stdint.h>
 
 #include "fluid_boundary.h"
+#include "neighbour_grid.h"
 #include "fluid_particles.h"
 #include "fluid_scheme.h"
 #include "participant.h"
@@ -34,6 +35,9 @@ typedef struct {
     int out_capacity;
     int n_windows;              /* windows with a boundary */
     double impedance;           /* rho0 c0 [Pa s/m] */
+    double work_on_fluid;       /* work of the solid's particles on the fluid so far [J]:
+                                 * sum of h (-F) . v at the steps' midpoints */
+    fsi_neighbour_grid solid_grid;  /* the boundary particles, for the penetration check */
 } fluid_coupling;
 
 /* An empty coupling behind the n_fixed fluid and wall particles of the case, for a
@@ -49,8 +53,8 @@ int fluid_coupling_receive(fluid_coupling *c, fsi_participant *part, fluid_parti
 /* The boundary particles at time t of the current window. */
 void fluid_coupling_move(const fluid_coupling *c, fluid_particles *p, double t);
 
-/* After the rates at a step's midpoint: adds h F to the window's impulse. 0, or -1
- * when memory runs out. */
+/* After the rates at a step's midpoint: adds h F to the window's impulse and the
+ * work the solid did on the fluid to work_on_fluid. 0, or -1 when memory runs out. */
 int fluid_coupling_accumulate(fluid_coupling *c, const fluid_scheme *scheme,
                               const fluid_particles *p, double h);
 
@@ -59,5 +63,11 @@ int fluid_coupling_accumulate(fluid_coupling *c, const fluid_scheme *scheme,
 int fluid_coupling_publish(fluid_coupling *c, fsi_participant *part,
                            const fluid_scheme *scheme, const fluid_particles *p, double dt,
                            char *msg, size_t msg_size);
+
+/* The fluid particles inside the solid: closer than half a spacing to one of its
+ * particles (a fluid particle at rest on the solid's face sits a whole spacing from the
+ * nearest solid particle). Returns how many, or -1 when memory runs out; *first is
+ * the index of one of them (-1 if none). */
+int fluid_coupling_count_inside(fluid_coupling *c, const fluid_particles *p, int *first);
 
 #endif

@@ -71,6 +71,9 @@ typedef struct {
     int t_rates, t_integrate, t_exchange, t_output;
     long steps;
     double stable_dt;           /* the stable step at the last evaluation [s] */
+    /* The penetration check (fluid_coupling_count_inside), after every window. */
+    long inside_windows;        /* windows with a fluid particle inside the solid */
+    int inside_max;             /* most fluid particles inside at once */
     int capacity;       /* particles x0 .. grad_p hold */
     int *order;         /* original index (output row) of the particle at each index of
                          * the fixed part; they are sorted by cell now and then */
@@ -551,11 +554,13 @@ static int check_health(fluid_run *s, double t, int window)
     double kinetic = kinetic_energy(p), released = s->potential0 -
                                                    (potential_energy(p, s->props.gravity) +
                                                     s->potential_wrapped);
-    /* Moving walls add their work; unknown (NAN: walls with different motions) lifts
-     * the bound. */
+    /* Moving walls and the solid add their work; unknown (NAN: walls with different
+     * motions) lifts the bound. */
     double budget = isnan(s->wall_work)
                         ? INFINITY
-                        : fmax(s->kinetic0 + s->compression0 + released + s->wall_work, 0.0);
+                        : fmax(s->kinetic0 + s->compression0 + released + s->wall_work +
+                                   s->coupling.work_on_fluid,
+                               0.0);
     if (!isfinite(kinetic) || kinetic > s->energy_limit * budget + s->energy_floor) {
         /* Walls move slower than an unstable fluid: the fastest of the case's particles
          * (not the solid's, at the tail) is a fluid one. */
@@ -565,7 +570,8 @@ static int check_health(fluid_run *s, double t, int window)
         snprintf(s->msg, sizeof s->msg,
                  "kinetic energy grew to %.6g J, more than "
                  "energy_growth_limit = %g times the initial kinetic and compression energy "
-                 "plus the potential energy released and the moving walls' work (%.6g J) plus the floor %.3g J; fastest: "
+                 "plus the potential energy released and the work of moving walls and solid "
+                 "(%.6g J) plus the floor %.3g J; fastest: "
                  "particle %d at %s "
                  "at %.3g m/s; at t = %.9g s (window %d): the integration is unstable",
                  kinetic, s->energy_limit, budget, s->energy_floor, p->id[fastest],
@@ -604,6 +610,28 @@ static int receive(fluid_run *s, fsi_participant *part, double t0)
         snprintf(s->msg, sizeof s->msg, "out of memory for %d particles", s->p.n);
         return -1;
     }
+    return 0;
+}
+
+/* Counts the fluid particles inside the solid after a window (fluid_coupling.h); the
+ * first window with any gets a warning naming one, the end of the run the totals. */
+static int check_penetration(fluid_run *s, double t, int window)
+{
+    int first;
+    const int inside = fluid_coupling_count_inside(&s->coupling, &s->p, &first);
+    if (inside < 0) {
+        snprintf(s->msg, sizeof s->msg, "out of memory for the penetration check");
+        return -1;
+    }
+    if (inside > 0 && s->inside_windows == 0) {
+        char at[128];
+        fsi_warn("%d fluid particle(s) inside the solid (closer than half a spacing to a "
+                 "solid particle) at t = %.9g s (window %d), e.g. particle %d at %s", inside,
+                 t, window, s->p.id[first], where_text(s, first, at, sizeof at));
+    }
+    s->inside_windows += inside > 0;
+    if (inside > s->inside_max)
+        s->inside_max = inside;
     return 0;
 }
 
@@ -653,6 +681,10 @@ int main(void)
             break;
         }
         if (advance(&s, t0, dt, window) != 0 || check_health(&s, t0 + dt, window) != 0) {
+            fsi_abort(part, "%s", s.msg);
+            break;
+        }
+        if (check_penetration(&s, t0 + dt, window) != 0) {
             fsi_abort(part, "%s", s.msg);
             break;
         }
@@ -708,6 +740,12 @@ int main(void)
                  s.timers.seconds[s.t_rates], s.timers.seconds[s.t_integrate],
                  busy > 0.0 ? (double)s.n_fluid * (double)s.steps / busy : 0.0);
         log_phases(&s.timers);
+        if (s.coupling.n_windows > 0)
+            fsi_info("interface: %d windows with solid particles; fluid particles inside the "
+                     "solid (closer than half a spacing to a solid particle): at most %d at "
+                     "once, in %ld windows; work of the solid on the fluid %.6g J",
+                     s.coupling.n_windows, s.inside_max, s.inside_windows,
+                     s.coupling.work_on_fluid);
     }
     free_run(&s);
     return fsi_close(part, &s.timers);

@@ -1,0 +1,103 @@
+"""C4 (docs/validation.md): the plate's mid-span deflection history of each run against
+plate theory, and the settled value (mean over the second half of the run).
+
+    /usr/bin/python3 bench/c4_plate_under_water.py --png P.png --md T.md RUN_DIR ...
+"""
+import argparse
+import os
+import re
+
+import fsi_results
+
+
+def vec(text):
+    return [float(v) for v in text.split(",")]
+
+
+def plate_theory(case):
+    """003 Eq. 53 from the case's own numbers: the clamped-clamped plate under the water
+    column's and its own weight, plane strain."""
+    s, f = case["solid"], case["fluid"]
+    plate, water = case["solid.block plate"], case["fluid.block water"]
+    p0, p1 = vec(plate["min"]), vec(plate["max"])
+    w0, w1 = vec(water["min"]), vec(water["max"])
+    L, T, H = p1[0] - p0[0], p1[1] - p0[1], w1[1] - w0[1]
+    E, nu = float(s["youngs_modulus"]), float(s["poisson_ratio"])
+    g = abs(vec(s["gravity"])[1])
+    rho_s, rho_w = float(s["density"]), float(f["density"])
+    return 12 * g * (1 - nu ** 2) * (rho_w * H + rho_s * T) * L ** 4 / (384 * E * T ** 3), T
+
+
+def grep(path, pattern, default=None):
+    try:
+        with open(path) as fh:
+            hits = re.findall(pattern, fh.read())
+        return hits[-1] if hits else default
+    except OSError:
+        return default
+
+
+def summary(run):
+    case = fsi_results.read_case(run)
+    delta, T = plate_theory(case)
+    dx = float(case["solid"]["spacing"])
+    pr = fsi_results.read_probes(run)
+    t, uy = pr["time"], pr["mid_uy"]
+    t_end = t[-1]
+    late = [u for tt, u in zip(t, uy) if tt >= 0.5 * t_end]
+    settled = -sum(late) / len(late) if late else float("nan")
+    windows = grep(os.path.join(run, "run.log"), r"\nwindows = (\d+)")
+    substeps = grep(os.path.join(run, "solid.log"), r"performance: (\d+) sub-steps")
+    n_fluid = grep(os.path.join(run, "fluid.log"), r"\((\d+) fluid in")
+    n_solid = grep(os.path.join(run, "solid.log"), r"\] (\d+) particles")
+    wall = grep(os.path.join(run, "run.log"), r"exit = ok \(([0-9.]+) s wall\)")
+    return dict(run=run, T_over_dx=T / dx, dx=dx, delta=delta, settled=settled,
+                swing=(max(late) - min(late)) / 2 if late else float("nan"), t=t, uy=uy,
+                t_end=t_end, windows=windows, substeps=substeps, n_fluid=n_fluid,
+                n_solid=n_solid, wall=wall, finished=wall is not None)
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--png", required=True)
+    ap.add_argument("--md", required=True)
+    ap.add_argument("runs", nargs="+")
+    a = ap.parse_args()
+    rows = [summary(r) for r in a.runs if os.path.exists(os.path.join(r, "probes.csv"))]
+    with open(a.md, "w") as md:
+        md.write("| T / dx | dx | fluid / solid particles | end | windows | solid sub-steps per "
+                 "window | settled deflection | error | swing (half range) | wall time |\n")
+        md.write("| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |\n")
+        for r in rows:
+            per = (int(r["substeps"]) / int(r["windows"])
+                   if r["substeps"] and r["windows"] else float("nan"))
+            md.write("| %.0f | %.4g m | %s / %s | %s | %s | %.1f | %.2f um | %+.2f %% | %.2f um "
+                     "| %s |\n" % (r["T_over_dx"], r["dx"], r["n_fluid"], r["n_solid"],
+                                   "t = %.3g s" % r["t_end"] if r["finished"]
+                                   else "stopped at t = %.3g s" % r["t_end"],
+                                   r["windows"] or "?", per, 1e6 * r["settled"],
+                                   100 * (r["settled"] / r["delta"] - 1), 1e6 * r["swing"],
+                                   (r["wall"] + " s") if r["wall"] else "?"))
+        if rows:
+            md.write("\nPlate theory (003 Eq. 53): %.2f um; settled = mean of -u_y over the "
+                     "second half of the run.\n" % (1e6 * rows[0]["delta"]))
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig, ax = plt.subplots(figsize=(7, 4))
+    for r in rows:
+        ax.plot(r["t"], [-1e6 * u for u in r["uy"]], lw=1,
+                label="T/dx = %.0f (settled %.1f um)" % (r["T_over_dx"], 1e6 * r["settled"]))
+    if rows:
+        ax.axhline(1e6 * rows[0]["delta"], color="k", ls="--",
+                   label="plate theory %.1f um" % (1e6 * rows[0]["delta"]))
+    ax.set_xlabel("t [s]")
+    ax.set_ylabel("mid-span deflection -u_y [um]")
+    ax.set_title("C4 water column on an aluminium plate (ULPH + NOSB-PD)")
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(a.png, dpi=120)
+
+
+if __name__ == "__main__":
+    main()
