@@ -28,7 +28,8 @@ import numpy as np
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import fsi_results  # noqa: E402
 
-DATA = "/work/shared/data/martin_moyce1952_surge_n2_2_a225in_exp.csv"
+DATA = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "data",
+                    "martin_moyce1952_surge_n2_2_a225in_exp.csv")
 
 
 def read_data(path):

@@ -7,7 +7,9 @@
 #
 # Each run's output is OUT/nN (log OUT/nN.txt); writes OUT/f1_dam_break.md (dx, fluid
 # particles, RMS of (Z_sim - Z_exp) / Z_exp, wall time, particle-steps/s from the fluid's
-# performance line) and OUT/f1_dam_break.png (bench/f1_dam_break.py). --resume keeps the
+# performance line) and OUT/f1_dam_break.png (bench/f1_dam_break.py), and the accuracy
+# against speed of the runs that reached every data point: OUT/accuracy_speed.csv and
+# OUT/f1_accuracy_speed.png (bench/accuracy_speed.py). --resume keeps the
 # runs of OUT that finished; --report runs nothing and compares the runs in OUT (finished
 # or not). --set is passed to every run (e.g. fluid.sound_speed=...).
 # Default N = 15 20 30 on 2 threads (with cfl_acoustic = 0.1: a / 20 about 4 min, a / 30
@@ -64,6 +66,7 @@ done
   --csv-out "$OUT/f1_dam_break.csv" "${DIRS[@]}" | tee "$OUT/f1_dam_break.txt"
 
 REPORT="$OUT/f1_dam_break.md"
+echo "solvers,resolution,dx_m,particles,threads,wall_s,error" > "$OUT/accuracy_speed.csv"
 {
   echo "| dx | a / dx | fluid particles | points | RMS (Z_sim - Z_exp) / Z_exp | end | fluid in walls (most, end) | wall time | threads | particle-steps/s |"
   echo "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |"
@@ -77,7 +80,11 @@ REPORT="$OUT/f1_dam_break.md"
     tend=$(grep "^$run " "$OUT/f1_dam_break.txt" | grep -o "t_end=[0-9.]*" | cut -d= -f2)
     if grep -q "^fsi run: finished" "$txt"; then endst="t = $tend s"; else endst="unstable, last frame t = $tend s"; fi
     echo "| $dx m | $ratio | $n | $pts / 15 | $(calc "'%.1f %%' % (100 * $rms)") | $endst | $inmax, $inend | ${wt} s | ${thr:-?} | ${pss:-?} |"
+    [ "$pts" = 15 ] && echo "ULPH,a/$(calc "round($ratio)"),$dx,$n,${thr:-?},$wt,$rms" >> "$OUT/accuracy_speed.csv"
   done
 } > "$REPORT"
 cat "$REPORT"
+"$PY" "$ROOT/bench/accuracy_speed.py" --title "F1 dam break: surge-front error against run time" \
+  --error-label "RMS (Z_sim - Z_exp) / Z_exp" --goal 0.05 --png "$OUT/f1_accuracy_speed.png" \
+  "$OUT/accuracy_speed.csv"
 log "report: $REPORT, plot: $OUT/f1_dam_break.png"

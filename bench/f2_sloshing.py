@@ -27,7 +27,8 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
-DATA = "/work/shared/data/faltinsen2000_sloshing_h0p6_T1p3_probe0p05m_exp.csv"
+DATA = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "data",
+                    "faltinsen2000_sloshing_h0p6_T1p3_probe0p05m_exp.csv")
 
 
 def read_probe(run):

@@ -48,5 +48,5 @@ if [ "$REPORT" = 0 ]; then
   for pid in "${pids[@]}"; do wait "$pid"; done
 fi
 "$PY" "$ROOT/bench/f2_sloshing.py" "$OUT" \
-  --data /work/shared/data/faltinsen2000_sloshing_h0p6_T1p3_probe0p05m_exp.csv
+  --data "$ROOT"/data/faltinsen2000_sloshing_h0p6_T1p3_probe0p05m_exp.csv
 log "wrote $OUT/f2_sloshing.md, $OUT/f2_sloshing.png, $OUT/f2_sloshing_faltinsen.png"

@@ -106,6 +106,7 @@ int solid_verlet_kick(solid_particles *p, const solid_forces *f, double h,
         }
         double m = mass_of(p, i), inv_m = 1.0 / m, step2 = 0.0, c = damping_of(in, i);
         double shrink = 1.0 / (1.0 + 0.5 * c * h);
+        double c_interface = in->particle_damping ? in->particle_damping[i] : 0.0;
         int finite = 1;
         for (int d = 0; d < FSI_DIM; d++) {
             int k = i * FSI_DIM + d;
@@ -117,7 +118,9 @@ int solid_verlet_kick(solid_particles *p, const solid_forces *f, double h,
             step2 += dx * dx;
             double fe = f->external_prev ? 0.5 * (f->external_prev[k] + f->external[k])
                                          : f->external[k];
-            dw += (fe + m * in->gravity[d]) * dx;
+            /* The interface impedance's -m c_i v is part of the fluid's force (its
+             * m c_i u is in 'external'); the mass-proportional damping is not work. */
+            dw += (fe + m * in->gravity[d] - m * c_interface * dx / h) * dx;
             finite &= isfinite(p->x[k]) && isfinite(v) && isfinite(p->a[k]);
         }
         /* Remember the first failure only, but finish the loop: the state stays

@@ -58,7 +58,8 @@ void solid_verlet_drift(solid_particles *p, double h, double *x_prev);
 /* Second half, with the forces at the new positions. Checks every point: finite
  * x, v, a and a displacement since x_prev of at most max_step. Adds the work the
  * external forces and gravity did over the sub-step (trapezoidal rule on
- * F . (x - x_prev)) to *work. Returns 0, or -1 with *fault set to the first failing
+ * F . (x - x_prev), with the interface impedance's -m c_i v at the mean velocity
+ * (x - x_prev) / h) to *work. Returns 0, or -1 with *fault set to the first failing
  * particle. */
 int solid_verlet_kick(solid_particles *p, const solid_forces *f, double h,
                       const solid_integrator *in, const double *x_prev, double *work,

@@ -551,6 +551,46 @@ static void test_interface(void)
     solid_interface_free(&b);
 }
 
+/* The window means the solid sends (solid_interface_gather): for a body moving as
+ * x(t) = x0 + v0 t + a t^2 / 2 over windows of different lengths, the mean velocity of
+ * the last window is exact, (x_k - x_{k-1}) / dt = v0 + a (t_{k-1} + t_k) / 2, and so is
+ * the acceleration from the last two means (their difference over the time between
+ * their midpoints). The first gathers send the instants, then a zero acceleration. */
+static void test_interface_window_means(void)
+{
+    double x0[FSI_DIM] = {0}, x[FSI_DIM] = {0}, v[FSI_DIM] = {0}, a[FSI_DIM] = {0};
+    double vol[1] = {1}, rho[1] = {1};
+    int32_t id[1] = {0}, blk[1] = {0};
+    uint8_t flags[1] = {0};
+    solid_particles p = {1, 1.0, id, x0, x, v, a, vol, rho, flags, blk, NULL};
+    solid_interface_buffers b;
+    CHECK(solid_interface_init(&b, 1) == 0, "init");
+    b.surface[0] = 1;
+    /* Window k starts at t_k = sum of the lengths before it; window 0 has length 0. */
+    const double v0 = 0.3, acc = -9.81, length[] = {0.0, 2e-3, 1e-3, 3e-3, 1.5e-3};
+    double t = 0.0;
+    for (int k = 0; k < 5; k++) {
+        const double dt_last = k > 0 ? length[k - 1] : 0.0;
+        t += dt_last;
+        x[0] = v0 * t + 0.5 * acc * t * t;
+        v[0] = v0 + acc * t;
+        a[0] = acc;
+        solid_interface_gather(&b, &p, dt_last);
+        const double sent_v = b.state.velocity[0], sent_a = b.state.acceleration[0];
+        if (k <= 1) {
+            CHECK(sent_v == v[0] && sent_a == a[0], "window %d: the instants (%g, %g)", k,
+                  sent_v, sent_a);
+        } else {
+            const double mean_v = v0 + acc * (t - 0.5 * dt_last);
+            CHECK(fabs(sent_v - mean_v) < 1e-12, "window %d: mean velocity %.15g, exact %.15g",
+                  k, sent_v, mean_v);
+            CHECK(k == 2 ? sent_a == 0.0 : fabs(sent_a - acc) < 1e-9,
+                  "window %d: mean acceleration %.15g", k, sent_a);
+        }
+    }
+    solid_interface_free(&b);
+}
+
 /* A clamp region with clamp_face = x_max left of a beam: every clamp point pairs with
  * its image across x = 0 (a beam point), is flagged SOLID_MIRRORED, follows it with
  * the opposite displacement and velocity after a drift, hands its internal force to
@@ -673,6 +713,7 @@ int main(void)
     test_clamp_face_check();
     test_integration();
     test_interface();
+    test_interface_window_means();
     if (failures) {
         fprintf(stderr, "test_solid_geometry: %d of %d checks failed\n", failures, checks);
         return 1;

@@ -1,0 +1,29 @@
+#!/usr/bin/env bash
+# C1 dam break against an elastic plate (docs/benchmarks.md C1, docs/validation.md C1):
+# cases/c1_elastic_plate.ini at each spacing, and the plate's upper-left corner against
+# the published numerical curves (data/elastic_obstacle_xdisp_num_*.csv).
+#
+#   bench/c1_elastic_plate.sh [OUT] [--dx "0.002"] [--resume | --report] [--threads T] [--set k=v ...]
+#
+# Each spacing must divide the plate (0.012 x 0.08 m), the walls and the clamp (0.012
+# m); the water column is the nearest whole number of spacings to 0.146 m. Each run's
+# output is OUT/dxMM (log OUT/dxMM.txt); writes OUT/c1_elastic_plate.md (first peak of
+# every curve, wall time) and OUT/c1_elastic_plate.png (bench/c1_elastic_plate.py).
+set -euo pipefail
+. "$(dirname "${BASH_SOURCE[0]}")/sweep.bash"
+sweep_parse c1_elastic_plate --dx "0.002" "$@"
+
+DIRS=()
+for dx in $LIST; do
+  dir="$OUT/dx$("$PY" -c "print('%g' % (1e3 * $dx))")mm"
+  width=$("$PY" -c "print(repr(round(0.146 / $dx) * $dx))")
+  DIRS+=("$dir")
+  log "$(basename "$dir"): dx = $dx m, water column $width m wide"
+  sweep_run "$dir" "$SWEEP_ROOT/cases/c1_elastic_plate.ini" \
+    --set "fluid.spacing=$dx" --set "solid.spacing=$dx" --set "fluid.block water.max=$width,0.292"
+done
+
+"$PY" "$SWEEP_ROOT/bench/c1_elastic_plate.py" --png "$OUT/c1_elastic_plate.png" \
+  --md "$OUT/c1_elastic_plate.md" "${DIRS[@]}"
+cat "$OUT/c1_elastic_plate.md"
+log "report: $OUT/c1_elastic_plate.md, plot: $OUT/c1_elastic_plate.png"
