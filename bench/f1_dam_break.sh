@@ -15,51 +15,19 @@
 # Default N = 15 20 30 on 2 threads (with cfl_acoustic = 0.1: a / 20 about 4 min, a / 30
 # about 15 min).
 set -euo pipefail
-
-ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-RUN="$ROOT/build/bin/fsi-run"
-PY=/usr/bin/python3
-OUT="$ROOT/out/bench/f1_dam_break"
-NS="15 20 30"
-RESUME=0
-THREADS=2
-EXTRA=()
-while [ $# -gt 0 ]; do
-  case "$1" in
-    --n) NS="$2"; shift ;;
-    --resume) RESUME=1 ;;
-    --report) RESUME=2 ;;
-    --threads) THREADS="$2"; shift ;;
-    --set) EXTRA+=(--set "$2"); shift ;;
-    -*) echo "f1_dam_break: unknown option $1" >&2; exit 2 ;;
-    *) OUT="$1" ;;
-  esac
-  shift
-done
-mkdir -p "$OUT"
-log() { echo "[f1_dam_break] $*" >&2; }
+. "$(dirname "${BASH_SOURCE[0]}")/sweep.bash"
+sweep_parse f1_dam_break --n "15 20 30" "$@"
+ROOT="$SWEEP_ROOT"
 . "$ROOT/bench/f1_run.bash"
 A=$F1_A
 calc() { f1_calc "$1"; }
 
 DIRS=()
-for n in $NS; do
-  name="n$n"
-  DIRS+=("$OUT/$name")
-  if { [ "$RESUME" = 1 ] && grep -q "^fsi run: finished" "$OUT/$name.txt" 2>/dev/null; } ||
-     { [ "$RESUME" = 2 ] && [ -f "$OUT/$name/fluid.h5" ]; }; then
-    log "$name: kept from an earlier run"
-    continue
-  fi
-  log "$name: dx = a / $n = $(calc "$A / $n") m ..."
-  start=$(date +%s.%N)
-  set +e
-  f1_run "$RUN" "$n" "$THREADS" "$OUT/$name" "${EXTRA[@]}"
-  rc=$?
-  set -e
-  end=$(date +%s.%N)
-  echo "wall_time_s $(calc "round($end - $start, 1)")" >> "$OUT/$name.txt"
-  [ $rc = 0 ] || log "$name: run failed (exit $rc), see $OUT/$name.txt; its frames are still compared"
+for n in $LIST; do
+  DIRS+=("$OUT/n$n")
+  log "n$n: dx = a / $n = $(calc "$A / $n") m"
+  f1_args "$n"
+  sweep_run "$OUT/n$n" "${F1_ARGS[@]}"
 done
 
 "$PY" "$ROOT/bench/f1_dam_break.py" --png "$OUT/f1_dam_break.png" \
@@ -80,7 +48,9 @@ echo "solvers,resolution,dx_m,particles,threads,wall_s,error" > "$OUT/accuracy_s
     tend=$(grep "^$run " "$OUT/f1_dam_break.txt" | grep -o "t_end=[0-9.]*" | cut -d= -f2)
     if grep -q "^fsi run: finished" "$txt"; then endst="t = $tend s"; else endst="unstable, last frame t = $tend s"; fi
     echo "| $dx m | $ratio | $n | $pts / 15 | $(calc "'%.1f %%' % (100 * $rms)") | $endst | $inmax, $inend | ${wt} s | ${thr:-?} | ${pss:-?} |"
-    [ "$pts" = 15 ] && echo "ULPH,a/$(calc "round($ratio)"),$dx,$n,${thr:-?},$wt,$rms" >> "$OUT/accuracy_speed.csv"
+    if [ "$pts" = 15 ]; then
+      echo "ULPH,a/$(calc "round($ratio)"),$dx,$n,${thr:-?},$wt,$rms" >> "$OUT/accuracy_speed.csv"
+    fi
   done
 } > "$REPORT"
 cat "$REPORT"
