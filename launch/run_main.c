@@ -233,15 +233,15 @@ static int start_processes(fsi_supervisor *sup, const char *out, const char *url
     fsi_bin_dir(bin, sizeof bin);
     if (log_traffic) {
         snprintf(path, sizeof path, "%s/traffic.lcmlog", out);
-        char url_opt[600];
-        snprintf(url_opt, sizeof url_opt, "--lcm-url=%s", url);
-        char *argv[] = {"lcm-logger", "-q", "-f", "--flush-interval=50", url_opt, path, NULL};
-        char logger_log[PATH_MAX + 32];
-        snprintf(logger_log, sizeof logger_log, "%s/lcm-logger.log", out);
-        if (fsi_supervisor_start(sup, "lcm-logger", "/usr/bin/lcm-logger", argv, NULL,
-                                 logger_log, 0, 1) != 0 ||
+        snprintf(program, sizeof program, "%s/fsi-record", bin);
+        char *argv[] = {"fsi-record", (char *)url, path, NULL};
+        char recorder_log[PATH_MAX + 32];
+        snprintf(recorder_log, sizeof recorder_log, "%s/traffic.log", out);
+        unlink(path);
+        if (fsi_supervisor_start(sup, "fsi-record", program, argv, NULL, recorder_log, 0, 1) !=
+                0 ||
             wait_for_file(path, 5.0) != 0) {
-            fsi_error("lcm-logger did not start (see %s)", logger_log);
+            fsi_error("the traffic recorder did not start (see %s)", recorder_log);
             return -1;
         }
     }
