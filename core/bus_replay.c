@@ -331,9 +331,9 @@ long fsi_replay_finish(fsi_replay *r)
     /* Own recorded messages the replay never published. Inputs read on the way are
      * of no more use. */
     for (read_ahead(r); r->have_gate; read_ahead(r)) {
-        if (r->missing++ == 0)
-            difference(r, r->gate.window, "%s of window %d is recorded but was not published",
-                       fsi_msg_name(r->gate.type), r->gate.window);
+        r->missing++;
+        difference(r, r->gate.window, "%s of window %d is recorded but was not published",
+                   fsi_msg_name(r->gate.type), r->gate.window);
         free(r->gate.bytes);
         r->gate.bytes = NULL;
         r->have_gate = 0;
