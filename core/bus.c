@@ -275,9 +275,12 @@ static void finish_replay_at_exit(void)
     fsi_bus *b = replaying_bus;
     if (!b)
         return;
-    pthread_mutex_lock(&b->lock);
+    /* No heartbeat thread runs in a replay, so a lock held here is held by this
+     * thread, which left through exit() from inside the replay (out of memory). */
+    int locked = pthread_mutex_trylock(&b->lock) == 0;
     fsi_replay_finish(b->replay);
-    pthread_mutex_unlock(&b->lock);
+    if (locked)
+        pthread_mutex_unlock(&b->lock);
 }
 
 /* FSI_REPLAY_LOG: the recording replaces the network entirely, no LCM is opened. */

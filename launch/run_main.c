@@ -333,6 +333,9 @@ int main(int argc, char **argv)
     putenv(env_out);
     putenv(env_url);
     putenv(env_id);
+    /* Variables of `fsi replay` would make every process replay a recording. */
+    unsetenv("FSI_REPLAY_LOG");
+    unsetenv("FSI_REPLAY_REPORT");
 
     fsi_supervisor_catch_signals(&interrupted);
 
