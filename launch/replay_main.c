@@ -189,28 +189,59 @@ static void read_verdict(const char *path, replay_verdict *v)
     fclose(f);
 }
 
-/* h5diff's verdict on the participant's HDF5 file: 0 same data, 1 differs, -1 when
- * the recorded run has no such file (nothing to compare). */
-static int compare_h5(const char *run_dir, const char *out_dir, const char *name)
+/* Runs `h5diff -q [--exclude-attribute /] a b`; 1 when it finds them identical. */
+static int h5diff_same(const char *a, const char *b, int skip_root_attributes)
+{
+    fflush(NULL);
+    pid_t pid = fork();
+    if (pid == 0) {
+        char *full[] = {"h5diff", "-q", (char *)a, (char *)b, NULL};
+        char *data[] = {"h5diff", "-q", "--exclude-attribute", "/", (char *)a, (char *)b, NULL};
+        execvp("h5diff", skip_root_attributes ? data : full);
+        _exit(2);
+    }
+    int status = 0;
+    if (pid < 0 || waitpid(pid, &status, 0) < 0)
+        return 0;
+    return WIFEXITED(status) && WEXITSTATUS(status) == 0;
+}
+
+typedef enum {
+    H5_NOT_RECORDED = -1,   /* the recorded run has no such file: nothing to compare */
+    H5_IDENTICAL = 0,
+    H5_DIFFERS = 1,
+    H5_OTHER_BUILD = 2      /* identical data; only the file's root attributes differ */
+} h5_verdict;
+
+/* The root attributes name the build (fsi_version holds the git commit), so a
+ * replay by a newer build of the same computation differs only there. */
+static h5_verdict compare_h5(const char *run_dir, const char *out_dir, const char *name)
 {
     char recorded[PATH_MAX + 80], replayed[PATH_MAX + 80];
     snprintf(recorded, sizeof recorded, "%s/%s.h5", run_dir, name);
     snprintf(replayed, sizeof replayed, "%s/%s.h5", out_dir, name);
     if (access(recorded, R_OK) != 0)
-        return -1;
+        return H5_NOT_RECORDED;
     if (access(replayed, R_OK) != 0)
-        return 1;
-    fflush(NULL);
-    pid_t pid = fork();
-    if (pid == 0) {
-        char *argv[] = {"h5diff", "-q", recorded, replayed, NULL};
-        execvp("h5diff", argv);
-        _exit(2);
+        return H5_DIFFERS;
+    if (h5diff_same(recorded, replayed, 0))
+        return H5_IDENTICAL;
+    return h5diff_same(recorded, replayed, 1) ? H5_OTHER_BUILD : H5_DIFFERS;
+}
+
+static const char *h5_verdict_text(h5_verdict v)
+{
+    switch (v) {
+    case H5_NOT_RECORDED:
+        return "not in the recorded run (not compared)";
+    case H5_IDENTICAL:
+        return "identical to the recorded one (h5diff)";
+    case H5_OTHER_BUILD:
+        return "identical data (h5diff); only its root attributes differ: written by another "
+               "build";
+    default:
+        return "differs from the recorded one (h5diff)";
     }
-    int status = 0;
-    if (pid < 0 || waitpid(pid, &status, 0) < 0)
-        return 1;
-    return WIFEXITED(status) && WEXITSTATUS(status) == 0 ? 0 : 1;
 }
 
 static void log_printf(const char *path, const char *mode, const char *fmt, ...)
@@ -297,16 +328,13 @@ int main(int argc, char **argv)
                                  sizeof failure);
     replay_verdict v;
     read_verdict(report, &v);
-    int h5 = compare_h5(o.run_dir, out_abs, o.participant);
-    int same = !failed && v.differences == 0 && h5 <= 0;
+    h5_verdict h5 = compare_h5(o.run_dir, out_abs, o.participant);
+    int same = !failed && v.differences == 0 && h5 != H5_DIFFERS;
 
     printf("fsi replay: %s: %ld messages compared, %ld differ%s%s\n", o.participant,
            v.compared < 0 ? 0 : v.compared, v.differences < 0 ? 0 : v.differences,
            v.differences > 0 ? "; first: " : "", v.differences > 0 ? v.first : "");
-    printf("fsi replay: %s.h5 %s\n", o.participant,
-           h5 < 0 ? "not in the recorded run (not compared)"
-                  : h5 == 0 ? "identical to the recorded one (h5diff)"
-                            : "differs from the recorded one (h5diff)");
+    printf("fsi replay: %s.h5 %s\n", o.participant, h5_verdict_text(h5));
     if (failed)
         printf("fsi replay: the participant failed: %s (see %s/%s.log)\n", failure, out_abs,
                o.participant);
@@ -314,7 +342,7 @@ int main(int argc, char **argv)
                "messages_compared = %ld\nmessages_differing = %ld\nfirst_difference = %s\n"
                "h5 = %s\nexit = %s (%.2f s wall)\n",
                v.compared, v.differences, v.differences > 0 ? v.first : "none",
-               h5 < 0 ? "not compared" : h5 == 0 ? "identical" : "differs",
+               h5_verdict_text(h5),
                same ? "reproduced" : failed ? failure : "differs", fsi_wall_seconds() - started);
     printf("fsi replay: %s; output in %s\n", same ? "reproduced bit for bit" : "NOT reproduced",
            out_abs);
