@@ -8,6 +8,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "bus_replay.h"
 #include "messages.h"
 #include "log.h"
 #include "timers.h"
@@ -29,7 +30,8 @@ typedef struct {
 } kept_message;
 
 struct fsi_bus {
-    lcm_t *lcm;
+    lcm_t *lcm;                /* NULL when replaying */
+    fsi_replay *replay;        /* FSI_REPLAY_LOG: a recording instead of the network */
     char self[64];
     int64_t run_id;
     fsi_bus_handler handler;
@@ -152,6 +154,12 @@ int fsi_bus_publish(fsi_bus *b, fsi_msg_type type, void *msg)
     h->run_id = b->run_id;
     h->seq = ++b->seq;
     h->sender = b->self;
+    if (b->replay) {
+        fsi_replay_compare(b->replay, type, msg);
+        b->counters.published++;
+        pthread_mutex_unlock(&b->lock);
+        return 0;
+    }
     int len = fsi_message_encoded_size(type, msg);
     void *bytes = len > 0 ? malloc((size_t)len) : NULL;
     int rc = -1;
@@ -209,18 +217,17 @@ static void count(fsi_bus *b, long *counter)
     pthread_mutex_unlock(&b->lock);
 }
 
-/* Every message passes here; only valid messages of this run from others go on. */
-static void on_lcm_message(const lcm_recv_buf_t *rbuf, const char *channel, void *user)
+/* Every message passes here, from the network or from a recording; only valid
+ * messages of this run from others go on. 'type' is the channel's kind or -1. */
+static void accept_message(fsi_bus *b, int type, const void *data, int len)
 {
-    fsi_bus *b = user;
-    int type = fsi_msg_type_of_channel(channel);
     if (type < 0) {
         count(b, &b->counters.ignored_unknown_channel);
         return;
     }
     fsi_message msg;
     /* lcm-gen's decode checks the type fingerprint and every length against the buffer. */
-    if (fsi_message_decode((fsi_msg_type)type, rbuf->data, (int)rbuf->data_size, &msg) != 0) {
+    if (fsi_message_decode((fsi_msg_type)type, data, len, &msg) != 0) {
         count(b, &b->counters.ignored_undecodable);
         return;
     }
@@ -239,6 +246,55 @@ static void on_lcm_message(const lcm_recv_buf_t *rbuf, const char *channel, void
     fsi_message_cleanup((fsi_msg_type)type, &msg);
 }
 
+static void on_lcm_message(const lcm_recv_buf_t *rbuf, const char *channel, void *user)
+{
+    accept_message(user, fsi_msg_type_of_channel(channel), rbuf->data, (int)rbuf->data_size);
+}
+
+/* Hands the next recorded message due to the handler; 0 when none is due. */
+static int replay_one(fsi_bus *b)
+{
+    fsi_msg_type type;
+    const void *bytes;
+    int len;
+    pthread_mutex_lock(&b->lock);
+    int due = fsi_replay_next_input(b->replay, &type, &bytes, &len);
+    pthread_mutex_unlock(&b->lock);
+    /* The bytes stay valid until the next call, which only this thread makes. */
+    if (due)
+        accept_message(b, (int)type, bytes, len);
+    return due;
+}
+
+/* The process may leave through exit() (an abort, a failed wait) without closing
+ * the bus; the replay's verdict must still be written. One bus per process replays. */
+static fsi_bus *replaying_bus;
+
+static void finish_replay_at_exit(void)
+{
+    fsi_bus *b = replaying_bus;
+    if (!b)
+        return;
+    /* No heartbeat thread runs in a replay, so a lock held here is held by this
+     * thread, which left through exit() from inside the replay (out of memory). */
+    int locked = pthread_mutex_trylock(&b->lock) == 0;
+    fsi_replay_finish(b->replay);
+    if (locked)
+        pthread_mutex_unlock(&b->lock);
+}
+
+/* FSI_REPLAY_LOG: the recording replaces the network entirely, no LCM is opened. */
+static int open_replay(fsi_bus *b, const char *log_path)
+{
+    b->replay = fsi_replay_open(log_path, b->self, b->run_id);
+    if (!b->replay)
+        return -1;
+    fsi_info("replaying %s from %s (no network)", b->self, log_path);
+    replaying_bus = b;
+    atexit(finish_replay_at_exit);
+    return 0;
+}
+
 fsi_bus *fsi_bus_open(const char *url, const char *self, int64_t run_id,
                       fsi_bus_handler handler, void *user)
 {
@@ -254,6 +310,14 @@ fsi_bus *fsi_bus_open(const char *url, const char *self, int64_t run_id,
     atomic_init(&b->heartbeat_window, -1);
     atomic_init(&b->heartbeat_state, 0);
     read_test_drop_switch(b);
+    const char *replay_log = getenv("FSI_REPLAY_LOG");
+    if (replay_log && *replay_log) {
+        if (open_replay(b, replay_log) == 0)
+            return b;
+        pthread_mutex_destroy(&b->lock);
+        free(b);
+        return NULL;
+    }
     if (!url || !*url)
         url = FSI_DEFAULT_LCM_URL;
     b->lcm = lcm_create(url);
@@ -274,6 +338,14 @@ fsi_bus *fsi_bus_open(const char *url, const char *self, int64_t run_id,
 
 int fsi_bus_poll(fsi_bus *b, double timeout_s)
 {
+    if (b->replay) {
+        /* Whoever polls waits for something; when the recording has nothing due
+         * before this process's own next message, it never will. */
+        if (replay_one(b))
+            return 1;
+        fsi_replay_explain_wait(b->replay, atomic_load(&b->heartbeat_window));
+        return -1;
+    }
     int ms = timeout_s <= 0 ? 0 : (int)(timeout_s * 1000.0 + 0.5);
     return lcm_handle_timeout(b->lcm, ms);
 }
@@ -281,6 +353,11 @@ int fsi_bus_poll(fsi_bus *b, double timeout_s)
 int fsi_bus_drain(fsi_bus *b)
 {
     int n = 0, rc;
+    if (b->replay) {
+        while (replay_one(b))
+            n++;
+        return n;
+    }
     while ((rc = lcm_handle_timeout(b->lcm, 0)) > 0)
         n++;
     return rc < 0 ? -1 : n;
@@ -304,8 +381,8 @@ static void *heartbeat_loop(void *arg)
 
 int fsi_bus_start_heartbeat(fsi_bus *b, double interval_s)
 {
-    if (b->heartbeat_running)
-        return 0;
+    if (b->heartbeat_running || b->replay)
+        return 0;   /* a replay has nobody to tell that it is alive */
     b->heartbeat_interval = interval_s;
     atomic_store(&b->heartbeat_stop, 0);
     if (pthread_create(&b->heartbeat_thread, NULL, heartbeat_loop, b) != 0) {
@@ -335,6 +412,11 @@ double fsi_bus_test_drop_fraction(const fsi_bus *b)
     return b->drop_fraction;
 }
 
+int fsi_bus_replaying(const fsi_bus *b)
+{
+    return b->replay != NULL;
+}
+
 const char *fsi_bus_self(const fsi_bus *b)
 {
     return b->self;
@@ -350,6 +432,11 @@ void fsi_bus_close(fsi_bus *b)
     }
     if (b->lcm)
         lcm_destroy(b->lcm);
+    if (b->replay) {
+        fsi_replay_finish(b->replay);
+        fsi_replay_free(b->replay);
+        replaying_bus = NULL;
+    }
     for (int i = 0; i < KEPT_MAX; i++)
         free(b->kept[i].bytes);
     pthread_mutex_destroy(&b->lock);

@@ -11,6 +11,10 @@
  *   messages this process publishes, at random from FSI_TEST_DROP_SEED (default 1).
  *   Only for tests that prove recovery; the run log records it.
  *
+ * - Replay: FSI_REPLAY_LOG=path in the environment replaces the network by a traffic
+ *   log (core/bus_replay.h): nothing is sent, the recorded messages for this process
+ *   are received, and what it publishes is compared with what it published then.
+ *
  * Thread safety: fsi_bus_publish may be called from any thread; fsi_bus_poll only
  * from one thread (the one that owns the handler). */
 #ifndef FSI_BUS_H
@@ -71,6 +75,8 @@ fsi_bus_counters fsi_bus_get_counters(fsi_bus *b);
 /* Fraction of messages withheld by the test switch (0 when off). */
 double fsi_bus_test_drop_fraction(const fsi_bus *b);
 const char *fsi_bus_self(const fsi_bus *b);
+/* 1 when the bus replays a traffic log (FSI_REPLAY_LOG) instead of using the network. */
+int fsi_bus_replaying(const fsi_bus *b);
 
 void fsi_bus_close(fsi_bus *b);
 

@@ -7,6 +7,7 @@ typedef struct {
     int (*encode)(void *buf, int maxlen, const void *msg);
     int (*decode)(const void *buf, int len, void *msg);
     void (*cleanup)(void *msg);
+    size_t struct_size;
 } msg_codec;
 
 /* Typed lcm-gen functions behind untyped wrappers (calling them through a cast
@@ -33,7 +34,8 @@ FSI_CODEC(resend_t)
 FSI_CODEC(heartbeat_t)
 FSI_CODEC(abort_t)
 
-#define CODEC_ENTRY(T) {T##_size_any, T##_encode_any, T##_decode_any, T##_cleanup_any}
+#define CODEC_ENTRY(T) \
+    {T##_size_any, T##_encode_any, T##_decode_any, T##_cleanup_any, sizeof(fsi_##T)}
 
 static const msg_codec codecs[FSI_MSG_COUNT] = {
     [FSI_MSG_REGISTER] = CODEC_ENTRY(register_t),
@@ -55,6 +57,11 @@ static int known(fsi_msg_type type)
 int fsi_message_encoded_size(fsi_msg_type type, const void *msg)
 {
     return known(type) ? codecs[type].encoded_size(msg) : -1;
+}
+
+size_t fsi_message_struct_size(fsi_msg_type type)
+{
+    return known(type) ? codecs[type].struct_size : 0;
 }
 
 int fsi_message_encode(fsi_msg_type type, const void *msg, void *buf, int len)

@@ -3,6 +3,8 @@
 #ifndef FSI_MESSAGES_H
 #define FSI_MESSAGES_H
 
+#include <stddef.h>
+
 #include "fsi_abort_t.h"
 #include "fsi_done_t.h"
 #include "fsi_fluid_load_t.h"
@@ -31,6 +33,8 @@ typedef union {
 
 /* Bytes needed to encode msg (an fsi_<kind>_t), or -1. */
 int fsi_message_encoded_size(fsi_msg_type type, const void *msg);
+/* sizeof the fsi_<kind>_t of a kind, or 0. */
+size_t fsi_message_struct_size(fsi_msg_type type);
 /* Encodes into buf[len]; returns the bytes written or -1. */
 int fsi_message_encode(fsi_msg_type type, const void *msg, void *buf, int len);
 /* Decodes exactly len bytes (type fingerprint and every length checked). Returns 0,

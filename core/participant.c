@@ -1,6 +1,7 @@
 #include "participant.h"
 
 #include <limits.h>
+#include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -264,7 +265,7 @@ static void wait_for(fsi_participant *p, ready_fn ready, request_fn request)
          * coupler's silence: after a window longer than the watchdog timeout its
          * heartbeats are queued, not missing. */
         if (fsi_bus_drain(p->bus) < 0)
-            die_with_run("LCM transport failed while waiting", FSI_EXIT_RUN_FAILURE);
+            die_with_run("the bus failed while waiting", FSI_EXIT_RUN_FAILURE);
         if (ready(p))
             break;
         check_run_alive(p);
@@ -276,7 +277,7 @@ static void wait_for(fsi_participant *p, ready_fn ready, request_fn request)
             next_request = now + interval;
         }
         if (fsi_bus_poll(p->bus, next_request - now) < 0)
-            die_with_run("LCM transport failed while waiting", FSI_EXIT_RUN_FAILURE);
+            die_with_run("the bus failed while waiting", FSI_EXIT_RUN_FAILURE);
     }
     fsi_timer_stop(&p->lib_timers, p->t_wait);
 }
@@ -316,6 +317,10 @@ fsi_participant *fsi_open(const char *name, const char *role, const char *case_p
         free(p);
         return NULL;
     }
+    /* A replay has no coupler to hear; a wait that the recording cannot end is
+     * reported by the bus instead. */
+    if (fsi_bus_replaying(p->bus))
+        p->env.watchdog_timeout = INFINITY;
     p->coupler_last_heard = fsi_wall_seconds();
     fsi_bus_set_heartbeat(p->bus, -1, FSI_STATE_STARTING);
     fsi_bus_start_heartbeat(p->bus, p->env.heartbeat_interval);

@@ -38,7 +38,9 @@ static int run_ip(char *const argv[])
     return WIFEXITED(status) && WEXITSTATUS(status) == 0 ? 0 : -1;
 }
 
-int fsi_enter_private_network(void)
+/* A new user + network namespace with ourselves mapped to root inside, as
+ * `unshare -rn` does; its only interface, loopback, is down. */
+static int enter_namespace(void)
 {
     uid_t uid = getuid();
     gid_t gid = getgid();
@@ -58,7 +60,22 @@ int fsi_enter_private_network(void)
     snprintf(map, sizeof map, "0 %u 1", (unsigned)gid);
     if (write_proc_file("/proc/self/gid_map", map) != 0)
         goto map_failed;
+    return 0;
 
+map_failed:
+    fsi_error("cannot map user ids in the private namespace: %s", strerror(errno));
+    return -1;
+}
+
+int fsi_leave_network(void)
+{
+    return enter_namespace();
+}
+
+int fsi_enter_private_network(void)
+{
+    if (enter_namespace() != 0)
+        return -1;
     char *const lo_up[] = {"ip", "link", "set", "lo", "up", NULL};
     char *const route[] = {"ip", "route", "add", "224.0.0.0/4", "dev", "lo", NULL};
     if (run_ip(lo_up) != 0 || run_ip(route) != 0) {
@@ -67,8 +84,4 @@ int fsi_enter_private_network(void)
         return -1;
     }
     return 0;
-
-map_failed:
-    fsi_error("cannot map user ids in the private namespace: %s", strerror(errno));
-    return -1;
 }

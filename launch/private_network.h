@@ -9,4 +9,8 @@
  * Returns 0, or -1 with a message. */
 int fsi_enter_private_network(void);
 
+/* The same namespace without bringing loopback up: no network at all, for
+ * processes that must not use one (`fsi replay`). Returns 0, or -1 with a message. */
+int fsi_leave_network(void);
+
 #endif

@@ -23,39 +23,21 @@
 #include "case_file.h"
 #include "log.h"
 #include "private_network.h"
-#include "run_keys.h"
 #include "protocol.h"
+#include "run_plan.h"
 #include "solver_registry.h"
 #include "supervisor.h"
 #include "timers.h"
 
-#define MAX_SETS 256
-
 typedef struct {
     const char *case_path;
-    const char *out_dir;
-    const char *sets[MAX_SETS];
-    int n_sets;
-    int threads;           /* 0: from the case */
+    launch_options common;   /* --out, --set, --threads, --force */
     int log_traffic;
     const char *lcm_url;   /* NULL: private namespace with the default URL */
-    int force;
     int check_only;
 } run_options;
 
-typedef struct {
-    const char *role;
-    char program[PATH_MAX];
-    int threads;
-} participant_plan;
-
 static volatile int interrupted;
-
-static void on_signal(int sig)
-{
-    (void)sig;
-    interrupted = 1;
-}
 
 static void usage(FILE *out)
 {
@@ -76,25 +58,15 @@ static int parse_options(int argc, char **argv, run_options *o)
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i];
         int has_value = i + 1 < argc;
-        if (strcmp(a, "--out") == 0 && has_value)
-            o->out_dir = argv[++i];
-        else if (strcmp(a, "--set") == 0 && has_value && o->n_sets < MAX_SETS)
-            o->sets[o->n_sets++] = argv[++i];
-        else if (strcmp(a, "--threads") == 0 && has_value) {
-            char *end;
-            long n = strtol(argv[++i], &end, 10);
-            if (*end || n < 1 || n > 1024) {
-                fprintf(stderr, "fsi run: --threads needs a whole number >= 1, not '%s'\n",
-                        argv[i]);
-                return -1;
-            }
-            o->threads = (int)n;
-        } else if (strcmp(a, "--log-traffic") == 0)
+        int shared = fsi_parse_launch_option(argc, argv, &i, &o->common, "fsi run");
+        if (shared < 0)
+            return -1;
+        if (shared)
+            continue;
+        if (strcmp(a, "--log-traffic") == 0)
             o->log_traffic = 1;
         else if (strcmp(a, "--lcm-url") == 0 && has_value)
             o->lcm_url = argv[++i];
-        else if (strcmp(a, "--force") == 0)
-            o->force = 1;
         else if (strcmp(a, "--check") == 0)
             o->check_only = 1;
         else if (strcmp(a, "-h") == 0 || strcmp(a, "--help") == 0) {
@@ -115,107 +87,25 @@ static int parse_options(int argc, char **argv, run_options *o)
     return 0;
 }
 
-static void bin_dir(char *dir, size_t len)
-{
-    char self[PATH_MAX];
-    ssize_t n = readlink("/proc/self/exe", self, sizeof self - 1);
-    self[n > 0 ? n : 0] = '\0';
-    snprintf(dir, len, "%s", dirname(self));
-}
-
-/* Finds each participant's program; every problem is bad input (exit 2). */
+/* Finds each participant's program; returns the number of problems (bad input). */
 static int plan_participants(const fsi_case *c, const run_options *o, participant_plan *plan,
                              int *n_plan)
 {
     const fsi_case_schema *schema = fsi_project_schema();
-    char bin[PATH_MAX];
-    bin_dir(bin, sizeof bin);
     int errors = 0;
     *n_plan = 0;
     for (int r = 0; r < schema->n_roles; r++) {
         const char *role = schema->roles[r];
-        if (!fsi_case_has_section(c, role))
-            continue;
-        participant_plan *p = &plan[(*n_plan)++];
-        p->role = role;
-        p->threads = o->threads ? o->threads : (int)fsi_case_get_int(c, role, "threads", 1);
-        const char *solver = fsi_case_get(c, role, "solver");
-        const fsi_solver_spec *spec = fsi_find_solver(solver);
-        int len = spec ? snprintf(p->program, sizeof p->program, "%s/%s", bin, spec->executable)
-                       : snprintf(p->program, sizeof p->program, "%s",
-                                  fsi_case_get(c, role, "executable"));
-        if (len >= (int)sizeof p->program) {
-            fprintf(stderr, "%s: [%s] program path is too long\n", fsi_case_path(c), role);
+        if (fsi_case_has_section(c, role) &&
+            fsi_plan_participant(c, role, o->common.threads, &plan[(*n_plan)++]) != 0)
             errors++;
-            continue;
-        }
-        if (access(p->program, X_OK) != 0) {
-            fprintf(stderr, "%s: [%s] %s: program '%s' is not executable: %s\n",
-                    fsi_case_path(c), role, spec ? "solver" : "executable", p->program,
-                    strerror(errno));
-            errors++;
-        }
     }
     if (*n_plan == 0) {
         fprintf(stderr, "%s: the case has neither a [fluid] nor a [solid] section\n",
                 fsi_case_path(c));
         errors++;
     }
-    return errors ? -1 : 0;
-}
-
-static int make_dirs(const char *path)
-{
-    char buf[PATH_MAX];
-    snprintf(buf, sizeof buf, "%s", path);
-    for (char *p = buf + 1; *p; p++)
-        if (*p == '/') {
-            *p = '\0';
-            if (mkdir(buf, 0755) != 0 && errno != EEXIST)
-                return -1;
-            *p = '/';
-        }
-    return mkdir(buf, 0755) != 0 && errno != EEXIST ? -1 : 0;
-}
-
-/* What a run writes; --force removes only these, never anything else in DIR. */
-static int is_run_output(const char *name)
-{
-    static const char *const patterns[] = {"*.h5", "*.xmf", "*.xmf.tmp", "*.log", "*.png",
-                                           "probes.csv", "case.resolved.ini", "traffic.lcmlog",
-                                           "*.csv"};
-    for (size_t i = 0; i < sizeof patterns / sizeof patterns[0]; i++)
-        if (fnmatch(patterns[i], name, 0) == 0)
-            return 1;
-    return 0;
-}
-
-/* Refuses to mix two runs' results in one folder unless --force. */
-static int prepare_output_dir(const char *dir, int force)
-{
-    DIR *d = opendir(dir);
-    if (!d)
-        return errno == ENOENT ? 0 : -1;
-    int earlier = 0;
-    struct dirent *e;
-    while ((e = readdir(d))) {
-        if (!is_run_output(e->d_name))
-            continue;
-        if (!force) {
-            earlier = 1;
-            break;
-        }
-        char path[PATH_MAX + 256];
-        snprintf(path, sizeof path, "%s/%s", dir, e->d_name);
-        unlink(path);
-    }
-    closedir(d);
-    if (earlier) {
-        fprintf(stderr, "fsi run: %s holds results of an earlier run; use --force to replace "
-                        "them or --out to choose another folder\n", dir);
-        return -1;
-    }
-    return 0;
+    return errors;
 }
 
 static void default_out_dir(const char *case_path, char *out, size_t len)
@@ -340,18 +230,18 @@ static int start_processes(fsi_supervisor *sup, const char *out, const char *url
                            int log_traffic, participant_plan *plan, int n_plan)
 {
     char bin[PATH_MAX], program[PATH_MAX + 32], path[PATH_MAX + 32];
-    bin_dir(bin, sizeof bin);
+    fsi_bin_dir(bin, sizeof bin);
     if (log_traffic) {
         snprintf(path, sizeof path, "%s/traffic.lcmlog", out);
-        char url_opt[600];
-        snprintf(url_opt, sizeof url_opt, "--lcm-url=%s", url);
-        char *argv[] = {"lcm-logger", "-q", "-f", "--flush-interval=50", url_opt, path, NULL};
-        char logger_log[PATH_MAX + 32];
-        snprintf(logger_log, sizeof logger_log, "%s/lcm-logger.log", out);
-        if (fsi_supervisor_start(sup, "lcm-logger", "/usr/bin/lcm-logger", argv, NULL,
-                                 logger_log, 0, 1) != 0 ||
+        snprintf(program, sizeof program, "%s/fsi-record", bin);
+        char *argv[] = {"fsi-record", (char *)url, path, NULL};
+        char recorder_log[PATH_MAX + 32];
+        snprintf(recorder_log, sizeof recorder_log, "%s/traffic.log", out);
+        unlink(path);
+        if (fsi_supervisor_start(sup, "fsi-record", program, argv, NULL, recorder_log, 0, 1) !=
+                0 ||
             wait_for_file(path, 5.0) != 0) {
-            fsi_error("lcm-logger did not start (see %s)", logger_log);
+            fsi_error("the traffic recorder did not start (see %s)", recorder_log);
             return -1;
         }
     }
@@ -362,20 +252,11 @@ static int start_processes(fsi_supervisor *sup, const char *out, const char *url
                              1, 0) != 0)
         return -1;
     for (int i = 0; i < n_plan; i++) {
-        static char env_name[8][80], env_threads[8][64];
-        snprintf(env_name[i], sizeof env_name[i], "FSI_PARTICIPANT=%s", plan[i].role);
-        snprintf(env_threads[i], sizeof env_threads[i], "OMP_NUM_THREADS=%d", plan[i].threads);
-        /* Waiting OpenMP threads sleep instead of spinning (unless the user chose): on
-         * a machine shared with other jobs a barrier spun for whole time slices while
-         * the thread it waited for was descheduled (F1 on 2 threads beside two other
-         * simulations: 6.6e4 particle-steps/s spinning, 5.1e5 sleeping;
-         * docs/performance.md). */
-        static char wait_policy[] = "OMP_WAIT_POLICY=passive";
-        char *env[] = {env_name[i], env_threads[i],
-                       getenv("OMP_WAIT_POLICY") ? NULL : wait_policy, NULL};
+        fsi_plan_environment(&plan[i]);
         char *argv[] = {plan[i].program, NULL};
         snprintf(path, sizeof path, "%s/%s.log", out, plan[i].role);
-        if (fsi_supervisor_start(sup, plan[i].role, plan[i].program, argv, env, path, 0, 0) != 0)
+        if (fsi_supervisor_start(sup, plan[i].role, plan[i].program, argv, plan[i].env, path, 0,
+                                 0) != 0)
             return -1;
     }
     return 0;
@@ -388,19 +269,12 @@ int main(int argc, char **argv)
     if (parse_options(argc, argv, &o) != 0)
         return FSI_EXIT_BAD_INPUT;
 
-    fsi_case *c = fsi_case_read(o.case_path, stderr);
+    fsi_case *c = fsi_load_case(o.case_path, o.common.sets, o.common.n_sets, "fsi run");
     if (!c)
         return FSI_EXIT_BAD_INPUT;
-    int errors = 0;
-    for (int i = 0; i < o.n_sets; i++)
-        errors += fsi_case_override(c, o.sets[i], stderr) != 0;
-    errors += fsi_case_validate(c, fsi_project_schema(), stderr);
-    if (errors == 0)
-        errors += fsi_run_keys_check(c, stderr);
     participant_plan plan[8];
     int n_plan = 0;
-    if (errors == 0 && plan_participants(c, &o, plan, &n_plan) != 0)
-        errors++;
+    int errors = plan_participants(c, &o, plan, &n_plan);
     if (errors) {
         fprintf(stderr, "fsi run: %s has %d error%s; nothing was run\n", o.case_path, errors,
                 errors == 1 ? "" : "s");
@@ -414,15 +288,15 @@ int main(int argc, char **argv)
     }
 
     char out[PATH_MAX], out_abs[PATH_MAX], path[PATH_MAX + 32];
-    if (o.out_dir)
-        snprintf(out, sizeof out, "%s", o.out_dir);
+    if (o.common.out_dir)
+        snprintf(out, sizeof out, "%s", o.common.out_dir);
     else
         default_out_dir(o.case_path, out, sizeof out);
-    if (prepare_output_dir(out, o.force) != 0) {
+    if (fsi_prepare_output_dir(out, o.common.force, "fsi run") != 0) {
         fsi_case_free(c);
         return FSI_EXIT_BAD_INPUT;
     }
-    if (make_dirs(out) != 0 || !realpath(out, out_abs)) {
+    if (fsi_make_dirs(out) != 0 || !realpath(out, out_abs)) {
         fprintf(stderr, "fsi run: cannot create the output folder %s: %s\n", out, strerror(errno));
         fsi_case_free(c);
         return FSI_EXIT_BAD_INPUT;
@@ -459,11 +333,11 @@ int main(int argc, char **argv)
     putenv(env_out);
     putenv(env_url);
     putenv(env_id);
+    /* Variables of `fsi replay` would make every process replay a recording. */
+    unsetenv("FSI_REPLAY_LOG");
+    unsetenv("FSI_REPLAY_REPORT");
 
-    struct sigaction sa = {0};
-    sa.sa_handler = on_signal;
-    sigaction(SIGINT, &sa, NULL);
-    sigaction(SIGTERM, &sa, NULL);
+    fsi_supervisor_catch_signals(&interrupted);
 
     static fsi_supervisor sup;
     int failed = start_processes(&sup, out_abs, url, o.log_traffic, plan, n_plan) != 0;

@@ -210,6 +210,23 @@ int fsi_supervisor_wait(fsi_supervisor *s, volatile int *interrupted)
     }
 }
 
+static volatile int *stop_flag;
+
+static void on_stop_signal(int sig)
+{
+    (void)sig;
+    *stop_flag = 1;
+}
+
+void fsi_supervisor_catch_signals(volatile int *flag)
+{
+    stop_flag = flag;
+    struct sigaction sa = {0};
+    sa.sa_handler = on_stop_signal;
+    sigaction(SIGINT, &sa, NULL);
+    sigaction(SIGTERM, &sa, NULL);
+}
+
 void fsi_supervisor_stop_helpers(fsi_supervisor *s)
 {
     signal_running(s, SIGINT, 1);

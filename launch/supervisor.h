@@ -35,6 +35,9 @@ int fsi_supervisor_start(fsi_supervisor *s, const char *name, const char *progra
  * reason in s->failure. 'interrupted' is polled to stop early on Ctrl-C. */
 int fsi_supervisor_wait(fsi_supervisor *s, volatile int *interrupted);
 
+/* Makes SIGINT and SIGTERM set *flag, the 'interrupted' of fsi_supervisor_wait. */
+void fsi_supervisor_catch_signals(volatile int *flag);
+
 /* Stops the helper processes (SIGINT, then SIGKILL after a grace period). */
 void fsi_supervisor_stop_helpers(fsi_supervisor *s);
 

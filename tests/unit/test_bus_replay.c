@@ -1,0 +1,213 @@
+/* The replay transport (core/bus_replay.h) on a hand-made traffic log: which
+ * recorded messages a participant gets and when, what is compared and what is
+ * not, a message recorded late because it was lost and resent, and the verdict. */
+#include <lcm/eventlog.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+
+#include "bus_replay.h"
+#include "messages.h"
+
+#include "unit_check.h"
+
+#define RUN 4242
+
+static void put(lcm_eventlog_t *log, fsi_msg_type type, void *msg, const char *sender,
+                int64_t run_id, int window, int64_t seq)
+{
+    fsi_header_t *h = msg;
+    h->protocol_version = FSI_PROTOCOL_VERSION;
+    h->run_id = run_id;
+    h->window = window;
+    h->seq = seq;
+    h->sender = (char *)sender;
+    int len = fsi_message_encoded_size(type, msg);
+    char *bytes = malloc((size_t)len);
+    fsi_message_encode(type, msg, bytes, len);
+    lcm_eventlog_event_t e = {0};
+    e.channel = (char *)fsi_msg_channel(type);
+    e.channellen = (int32_t)strlen(e.channel);
+    e.data = bytes;
+    e.datalen = len;
+    lcm_eventlog_write_event(log, &e);
+    free(bytes);
+}
+
+static double probe = 0.5, force[2] = {1.0, -2.0}, pressure[1] = {3.0};
+static int32_t ids[1] = {7};
+static char *probe_names[1] = {"p"};
+static char *names[2] = {"fluid", "solid"}, *roles[2] = {"fluid", "solid"};
+
+static fsi_register_t reg(const char *host, int pid)
+{
+    fsi_register_t r = {0};
+    r.role = "fluid";
+    r.host = (char *)host;
+    r.pid = pid;
+    r.dt_proposed = 1e-3;
+    r.n_probes = 1;
+    r.probe_names = probe_names;
+    return r;
+}
+
+static fsi_fluid_load_t load(void)
+{
+    fsi_fluid_load_t m = {0};
+    m.dim = FSI_DIM;
+    m.n = 1;
+    m.n_components = FSI_DIM;
+    m.id = ids;
+    m.pressure = pressure;
+    m.force = force;
+    return m;
+}
+
+static fsi_done_t done(double *value)
+{
+    fsi_done_t d = {0};
+    d.dt_next_max = 1e-3;
+    d.n_probes = 1;
+    d.probe_values = value;
+    d.message = "";
+    return d;
+}
+
+static fsi_step_t step(double t, double dt)
+{
+    fsi_step_t s = {0};
+    s.t = t;
+    s.dt = dt;
+    s.frame = -1;
+    return s;
+}
+
+/* The fluid's side of a run whose fluid_load of window 0 was lost once: the log
+ * holds its resent copy after the fluid's done, and then a duplicate. */
+static void write_log(const char *path)
+{
+    lcm_eventlog_t *log = lcm_eventlog_create(path, "w");
+    fsi_register_t r = reg("recorded-host", 100);
+    put(log, FSI_MSG_REGISTER, &r, "fluid", RUN, -1, 1);
+    fsi_register_t again = reg("recorded-host", 100);
+    put(log, FSI_MSG_REGISTER, &again, "fluid", RUN, -1, 2);
+    fsi_welcome_t w = {0};
+    w.participant = "solid";
+    w.n_participants = 2;
+    w.participant_names = names;
+    w.participant_roles = roles;
+    put(log, FSI_MSG_WELCOME, &w, "coupler", RUN, -1, 1);
+    w.participant = "fluid";
+    put(log, FSI_MSG_WELCOME, &w, "coupler", RUN, -1, 2);
+    fsi_step_t s0 = step(0.0, 0.0);
+    put(log, FSI_MSG_STEP, &s0, "coupler", RUN, 0, 3);
+    fsi_heartbeat_t hb = {0};
+    hb.state = FSI_STATE_RUNNING;
+    put(log, FSI_MSG_HEARTBEAT, &hb, "coupler", RUN, 0, 4);
+    fsi_solid_state_t ss = {0};
+    ss.dim = FSI_DIM;
+    put(log, FSI_MSG_SOLID_STATE, &ss, "solid", RUN, 0, 1);
+    double recorded_probe = probe;
+    fsi_done_t d = done(&recorded_probe);
+    put(log, FSI_MSG_DONE, &d, "fluid", RUN, 0, 5);
+    fsi_fluid_load_t l = load();
+    put(log, FSI_MSG_FLUID_LOAD, &l, "fluid", RUN, 0, 3);
+    fsi_step_t foreign = step(9.0, 9.0);
+    put(log, FSI_MSG_STEP, &foreign, "coupler", RUN + 1, 1, 9);
+    fsi_step_t s1 = step(0.0, 1e-3);
+    put(log, FSI_MSG_STEP, &s1, "coupler", RUN, 1, 5);
+    put(log, FSI_MSG_FLUID_LOAD, &l, "fluid", RUN, 0, 3);
+    lcm_eventlog_destroy(log);
+}
+
+/* The kinds of the inputs due now, as a string of kind initials. */
+static void due(fsi_replay *r, char *kinds, size_t len)
+{
+    size_t n = 0;
+    fsi_msg_type type;
+    const void *bytes;
+    int size;
+    while (n + 1 < len && fsi_replay_next_input(r, &type, &bytes, &size))
+        kinds[n++] = fsi_msg_name(type)[0];
+    kinds[n] = '\0';
+}
+
+static void publish(fsi_replay *r, fsi_msg_type type, void *msg, int window, int64_t seq)
+{
+    fsi_header_t *h = msg;
+    h->protocol_version = FSI_PROTOCOL_VERSION;
+    h->run_id = RUN;
+    h->window = window;
+    h->seq = seq;
+    h->sender = "fluid";
+    fsi_replay_compare(r, type, msg);
+}
+
+static void read_report(const char *path, char *text, size_t len)
+{
+    FILE *f = fopen(path, "r");
+    size_t n = f ? fread(text, 1, len - 1, f) : 0;
+    text[n] = '\0';
+    if (f)
+        fclose(f);
+}
+
+int main(void)
+{
+    const char *tmp = getenv("FSI_TEST_TMP") ? getenv("FSI_TEST_TMP") : ".";
+    char log_path[512], report[512], text[2048], kinds[16];
+    snprintf(log_path, sizeof log_path, "%s/test_bus_replay.lcmlog", tmp);
+    snprintf(report, sizeof report, "%s/test_bus_replay.report", tmp);
+    mkdir(tmp, 0755);   /* ctest's scratch folder; may exist already */
+    write_log(log_path);
+    setenv("FSI_REPLAY_REPORT", report, 1);
+
+    CHECK(fsi_replay_open("no/such.lcmlog", "fluid", RUN) == NULL, "a missing log opened");
+    CHECK(fsi_replay_open(log_path, "fluid", RUN + 7) == NULL, "another run's replay opened");
+    CHECK(fsi_replay_open(log_path, "nobody", RUN) == NULL, "a replay of nobody opened");
+
+    fsi_replay *r = fsi_replay_open(log_path, "fluid", RUN);
+    CHECK(r != NULL, "cannot open the replay");
+    if (!r)
+        return unit_check_report("test_bus_replay");
+    due(r, kinds, sizeof kinds);
+    CHECK(strcmp(kinds, "") == 0, "due before the register: '%s'", kinds);
+    /* pid, host and seq are the machine's, not the computation's. */
+    fsi_register_t mine = reg("another-host", 200);
+    publish(r, FSI_MSG_REGISTER, &mine, -1, 1);
+    publish(r, FSI_MSG_REGISTER, &mine, -1, 2);   /* a repeat: not compared */
+    due(r, kinds, sizeof kinds);
+    /* welcome (for us only), step 0, solid state 0; not the heartbeat */
+    CHECK(strcmp(kinds, "wss") == 0, "due after the register: '%s'", kinds);
+    fsi_fluid_load_t l = load();
+    publish(r, FSI_MSG_FLUID_LOAD, &l, 0, 3);     /* recorded only after the done */
+    due(r, kinds, sizeof kinds);
+    CHECK(strcmp(kinds, "") == 0, "due before the done: '%s'", kinds);
+    double changed = probe + 1e-12;
+    fsi_done_t d = done(&changed);
+    publish(r, FSI_MSG_DONE, &d, 0, 4);
+    due(r, kinds, sizeof kinds);
+    CHECK(strcmp(kinds, "s") == 0, "due after the done: '%s' (step 1 only)", kinds);
+    CHECK(fsi_replay_finish(r) == 1, "differences: expected 1 (the probe)");
+    fsi_replay_free(r);
+    read_report(report, text, sizeof text);
+    CHECK(strstr(text, "compared = 3\n") != NULL, "report: %s", text);
+    CHECK(strstr(text, "differences = 1\n") != NULL, "report: %s", text);
+    CHECK(strstr(text, "first_difference_window = 0\n") != NULL, "report: %s", text);
+    CHECK(strstr(text, "first_difference = done of window 0: probe_values[0] = "
+                       "0.50000000000099998, recorded 0.5\n") != NULL,
+          "report: %s", text);
+
+    /* A participant that stops early: its recorded messages count as missing. */
+    r = fsi_replay_open(log_path, "fluid", RUN);
+    publish(r, FSI_MSG_REGISTER, &mine, -1, 1);
+    CHECK(fsi_replay_finish(r) == 2, "a replay that stopped early: expected 2 differences");
+    fsi_replay_free(r);
+    read_report(report, text, sizeof text);
+    CHECK(strstr(text, "missing = 2\n") != NULL, "report: %s", text);
+    CHECK(strstr(text, "first_difference = done of window 0 is recorded but was not "
+                       "published\n") != NULL,
+          "report: %s", text);
+    return unit_check_report("test_bus_replay");
+}
