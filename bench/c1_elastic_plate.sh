@@ -3,7 +3,7 @@
 # cases/c1_elastic_plate.ini at each spacing, and the plate's upper-left corner against
 # the published numerical curves (data/elastic_obstacle_xdisp_num_*.csv).
 #
-#   bench/c1_elastic_plate.sh [OUT] [--dx "0.002"] [--resume | --report] [--threads T] [--set k=v ...]
+#   bench/c1_elastic_plate.sh [OUT] [--dx "0.004 0.002"] [--resume | --report] [--threads T] [--set k=v ...]
 #
 # Each spacing must divide the plate (0.012 x 0.08 m), the walls and the clamp (0.012
 # m); the water column is the nearest whole number of spacings to 0.146 m. Each run's
@@ -11,7 +11,7 @@
 # every curve, wall time) and OUT/c1_elastic_plate.png (bench/c1_elastic_plate.py).
 set -euo pipefail
 . "$(dirname "${BASH_SOURCE[0]}")/sweep.bash"
-sweep_parse c1_elastic_plate --dx "0.002" "$@"
+sweep_parse c1_elastic_plate --dx "0.004 0.002" "$@"
 
 DIRS=()
 for dx in $LIST; do

@@ -19,10 +19,9 @@ int solid_interface_init(solid_interface_buffers *b, int n_particles)
     b->state.volume = malloc(n * sizeof(double));
     b->x_window = malloc(v * sizeof(double));
     b->v_mean = malloc(v * sizeof(double));
-    b->a_mean = malloc(v * sizeof(double));
     if (!b->surface || !b->received || !b->state.id || !b->state.position ||
         !b->state.velocity || !b->state.acceleration || !b->state.volume || !b->x_window ||
-        !b->v_mean || !b->a_mean) {
+        !b->v_mean) {
         solid_interface_free(b);
         return -1;
     }
@@ -41,7 +40,6 @@ void solid_interface_free(solid_interface_buffers *b)
     free(b->state.volume);
     free(b->x_window);
     free(b->v_mean);
-    free(b->a_mean);
     memset(b, 0, sizeof *b);
 }
 
@@ -63,7 +61,6 @@ int solid_interface_gather(solid_interface_buffers *b, const solid_particles *p,
                                     : p->a[k];
             b->x_window[k] = p->x[k];
             b->v_mean[k] = v_mean[d];
-            b->a_mean[k] = a_mean[d];
         }
         if (!b->surface[i])
             continue;
@@ -129,12 +126,16 @@ int solid_interface_take(solid_interface_buffers *b, const fsi_interface *in,
 }
 
 void solid_interface_damping(const solid_interface_buffers *b, const solid_particles *p,
-                             double impedance, double *damping)
+                             const double *force, double impedance, double *damping)
 {
     const double area = pow(p->spacing, FSI_DIM - 1);
     const int n_all = p->n < b->capacity ? p->n : b->capacity;
-    for (int i = 0; i < n_all; i++)
-        damping[i] = b->received[i] && impedance > 0.0
+    for (int i = 0; i < n_all; i++) {
+        int loaded = 0;
+        for (int d = 0; d < FSI_DIM; d++)
+            loaded |= force[i * FSI_DIM + d] != 0.0;
+        damping[i] = b->received[i] && loaded && impedance > 0.0
                          ? impedance * area / (p->density[i] * p->volume[i])
                          : 0.0;
+    }
 }

@@ -25,7 +25,7 @@ typedef struct {
                                  * acceleration, volume (pressure, force NULL) */
     /* Window means (solid_interface_gather): every particle's position at the last
      * window's start and its mean velocity over the window before, FSI_DIM each. */
-    double *x_window, *v_mean, *a_mean;
+    double *x_window, *v_mean;
     int have_x_window;          /* x_window holds a gather's positions */
     double dt_mean;             /* the window v_mean is over [s]; 0: no mean yet */
 } solid_interface_buffers;
@@ -59,20 +59,22 @@ int solid_interface_take(solid_interface_buffers *b, const fsi_interface *in,
 
 /* The fluid's answer within a window (docs/coupling.md). The fluid's load F_k is held
  * over the window while the solid sub-cycles, computed for the motion the solid sent,
- * u(t) = v_mean + a_mean (t - t_k). Where the solid departs from that motion the fluid
- * would have pushed back at once with its acoustic impedance z = rho0 c0: a wall
- * moving into still water at v raises the pressure by z v. The solid applies that
- * answer itself,
- *     F(t) = F_k - z A (v(t) - u(t)),
- * on every particle that carries a load (A = spacing^(dim-1), the face one particle
+ * at the mean velocity u = v_mean of the last window (and the mean acceleration, whose
+ * small part a_mean (t - t_k) is left out here: with one sub-step per window it is a
+ * second difference of positions, and fed back through z it pumped the solid's
+ * fastest mode). Where the solid departs from that motion the fluid would have pushed
+ * back at once with its acoustic impedance z = rho0 c0: a wall moving into still water
+ * at v raises the pressure by z v. The solid applies that answer itself,
+ *     F(t) = F_k - z A (v(t) - u),
+ * on every particle that carries a non-zero load (A = spacing^(dim-1), the face one particle
  * presents). Without it the held load lags the solid's motion by up to a window, and
  * every mode that turns by more than a quarter period within a window is pumped
  * (the load works against the velocity one window late): a plate's short bending
  * waves grew without bound. The term vanishes when the solid follows u, i.e. as the
  * window shrinks, and only ever removes energy. damping[i] = z A / m_i [1/s] (0 for
  * particles without a load); the integrator treats -c v implicitly and the main loop
- * adds m c u(t) to the external force. */
+ * adds m c u to the external force. */
 void solid_interface_damping(const solid_interface_buffers *b, const solid_particles *p,
-                             double impedance, double *damping);
+                             const double *force, double impedance, double *damping);
 
 #endif

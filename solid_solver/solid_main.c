@@ -55,7 +55,6 @@ typedef struct {
     double safety, energy_limit;
     double *f_int, *f_ext, *f_ext_prev, *f_fluid, *p_fluid, *x_prev, *scratch;
     double *interface_damping;      /* per particle: z A / m [1/s] (solid_interface.h) */
-    double t_window;                /* start of the current window [s] */
     /* energy check */
     double energy0, work, work_in, energy_floor;
     double box_min[FSI_DIM], box_max[FSI_DIM];
@@ -219,16 +218,13 @@ static void external_forces(solid_run *s, double t, double *f_ext)
     const solid_particles *p = &s->p;
     size_t nv = (size_t)p->n * FSI_DIM;
     memcpy(f_ext, s->f_fluid, nv * sizeof *f_ext);
-    const double tau = t - s->t_window;
     for (int i = 0; i < p->n; i++) {
         const double c = s->interface_damping[i];
         if (c == 0.0)
             continue;
         const double m = p->density[i] * p->volume[i];
-        for (int d = 0; d < FSI_DIM; d++) {
-            const int k = i * FSI_DIM + d;
-            f_ext[k] += m * c * (s->iface.v_mean[k] + s->iface.a_mean[k] * tau);
-        }
+        for (int d = 0; d < FSI_DIM; d++)
+            f_ext[i * FSI_DIM + d] += m * c * s->iface.v_mean[i * FSI_DIM + d];
     }
     solid_loads_add(&s->loads, t, f_ext);
 }
@@ -253,7 +249,8 @@ static int exchange(solid_run *s, fsi_participant *part, double dt_last)
     if (solid_interface_take(&s->iface, &loads, &s->p, s->f_fluid, s->p_fluid, s->msg,
                              sizeof s->msg) != 0)
         return -1;
-    solid_interface_damping(&s->iface, &s->p, loads.impedance, s->interface_damping);
+    solid_interface_damping(&s->iface, &s->p, s->f_fluid, loads.impedance,
+                            s->interface_damping);
     return 0;
 }
 
@@ -406,7 +403,6 @@ int main(void)
         int window = fsi_window_index(part);
 
         fsi_timer_start(&s.timers, s.t_exchange);
-        s.t_window = t0;
         int rc = exchange(&s, part, dt_last);
         dt_last = dt;
         fsi_timer_stop(&s.timers, s.t_exchange);
