@@ -14,51 +14,18 @@
 # about 15 min).
 set -euo pipefail
 
-ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-RUN="$ROOT/build/bin/fsi-run"
-PY=/usr/bin/python3
-OUT="$ROOT/out/bench/f1_dam_break"
 NS="15 20 30"
-RESUME=0
 THREADS=2
-EXTRA=()
-while [ $# -gt 0 ]; do
-  case "$1" in
-    --n) NS="$2"; shift ;;
-    --resume) RESUME=1 ;;
-    --report) RESUME=2 ;;
-    --threads) THREADS="$2"; shift ;;
-    --set) EXTRA+=(--set "$2"); shift ;;
-    -*) echo "f1_dam_break: unknown option $1" >&2; exit 2 ;;
-    *) OUT="$1" ;;
-  esac
-  shift
-done
-mkdir -p "$OUT"
-log() { echo "[f1_dam_break] $*" >&2; }
+. "$(dirname "${BASH_SOURCE[0]}")/sweep.bash"
+sweep_args f1_dam_break "$@"
 . "$ROOT/bench/f1_run.bash"
 A=$F1_A
 calc() { f1_calc "$1"; }
-
-DIRS=()
-for n in $NS; do
-  name="n$n"
-  DIRS+=("$OUT/$name")
-  if { [ "$RESUME" = 1 ] && grep -q "^fsi run: finished" "$OUT/$name.txt" 2>/dev/null; } ||
-     { [ "$RESUME" = 2 ] && [ -f "$OUT/$name/fluid.h5" ]; }; then
-    log "$name: kept from an earlier run"
-    continue
-  fi
-  log "$name: dx = a / $n = $(calc "$A / $n") m ..."
-  start=$(date +%s.%N)
-  set +e
-  f1_run "$RUN" "$n" "$THREADS" "$OUT/$name" "${EXTRA[@]}"
-  rc=$?
-  set -e
-  end=$(date +%s.%N)
-  echo "wall_time_s $(calc "round($end - $start, 1)")" >> "$OUT/$name.txt"
-  [ $rc = 0 ] || log "$name: run failed (exit $rc), see $OUT/$name.txt; its frames are still compared"
-done
+f1_one() {
+  log "dx = a / $1 = $(calc "$A / $1") m"
+  f1_run "$RUN" "$1" "$THREADS" "$2" "${@:3}"
+}
+sweep_runs n fluid.h5 f1_one
 
 "$PY" "$ROOT/bench/f1_dam_break.py" --png "$OUT/f1_dam_break.png" \
   --csv-out "$OUT/f1_dam_break.csv" "${DIRS[@]}" | tee "$OUT/f1_dam_break.txt"
