@@ -166,7 +166,7 @@ def main():
         for ax, k, what in zip(axes, ("x", "y"), ("horizontal (downstream)", "vertical (lift)")):
             for r in results:
                 lab = f"ULPH-PD T/dx = {THICKNESS / r['dx']:.0f}"
-                if r["err"][k][1]:
+                if r["ended"]:
                     lab += f", NRMSE {100 * r['err'][k][0]:.1f} %"
                 if not r["ended"]:
                     lab += f", unstable at t = {r['t'][-1]:.3f} s"

@@ -53,11 +53,11 @@ REPORT="$OUT/c2_elastic_gate.md"
   echo "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |"
   tail -n +2 "$OUT/c2_elastic_gate.csv" | while IFS=, read -r run dx ratio nf ns tend ex nx ey ny pux tux puy tuy; do
     txt="$run.txt"
-    wt=$(sed -n 's/^fsi run: finished in \([0-9.]*\) s.*/\1/p' "$txt" | tail -1)
+    wt=$(sed -n 's/^fsi run: finished in \([0-9.]*\) s.*/\1/p' "$txt" | tail -1 || true)
     [ -n "$wt" ] || wt=$(awk '/^wall_time_s/ {print $2}' "$txt" | tail -1)
-    thr=$(grep -o 'on [0-9]* thread(s)' "$run/fluid.log" 2>/dev/null | tail -1 | awk '{print $2}')
-    if grep -q "^fsi run: finished" "$txt"; then endst="t = $tend s"; else endst="unstable, stopped at t = $tend s"; fi
-    echo "| $dx m | $ratio | $nf | $ns | $endst | $(calc "'%.1f %%' % (100 * float('$ex'))") ($nx / 9) | $(calc "'%.1f %%' % (100 * float('$ey'))") ($ny / 9) | $pux m ($tux s) | $puy m ($tuy s) | ${wt} s | ${thr:-?} |"
+    thr=$(cat "$run/fluid.log" "$run/solid.log" 2>/dev/null | grep -o 'on [0-9]* thread(s)' | tail -1 | awk '{print $2}' || true)
+    if grep -q "^fsi run: finished" "$txt"; then endst="t = $tend s"; else endst="unstable, last probe row t = $tend s"; fi
+    echo "| $dx m | $ratio | $nf | $ns | $endst | $(calc "'-' if $nx == 0 else '%.1f %%' % (100 * $ex)") ($nx / 9) | $(calc "'-' if $ny == 0 else '%.1f %%' % (100 * $ey)") ($ny / 9) | $pux m ($tux s) | $puy m ($tuy s) | ${wt} s | ${thr:-?} |"
   done
 } > "$REPORT"
 cat "$REPORT"
