@@ -19,11 +19,11 @@ for dx in $LIST; do
   width=$("$PY" -c "print(repr(round(0.146 / $dx) * $dx))")
   DIRS+=("$dir")
   log "$(basename "$dir"): dx = $dx m, water column $width m wide"
-  sweep_run "$dir" "$SWEEP_ROOT/cases/c1_elastic_plate.ini" \
+  sweep_run "$dir" "$ROOT/cases/c1_elastic_plate.ini" \
     --set "fluid.spacing=$dx" --set "solid.spacing=$dx" --set "fluid.block water.max=$width,0.292"
 done
 
-"$PY" "$SWEEP_ROOT/bench/c1_elastic_plate.py" --png "$OUT/c1_elastic_plate.png" \
+"$PY" "$ROOT/bench/c1_elastic_plate.py" --png "$OUT/c1_elastic_plate.png" \
   --md "$OUT/c1_elastic_plate.md" "${DIRS[@]}"
 cat "$OUT/c1_elastic_plate.md"
 log "report: $OUT/c1_elastic_plate.md, plot: $OUT/c1_elastic_plate.png"

@@ -20,11 +20,11 @@ for n in $LIST; do
   dx=$("$PY" -c "print(repr($T / $n))")
   DIRS+=("$OUT/n$n")
   log "n$n: dx = T / $n = $dx m"
-  sweep_run "$OUT/n$n" "$SWEEP_ROOT/cases/c4_plate_under_water.ini" \
+  sweep_run "$OUT/n$n" "$ROOT/cases/c4_plate_under_water.ini" \
     --set "fluid.spacing=$dx" --set "solid.spacing=$dx"
 done
 
-"$PY" "$SWEEP_ROOT/bench/c4_plate_under_water.py" --png "$OUT/c4_plate_under_water.png" \
+"$PY" "$ROOT/bench/c4_plate_under_water.py" --png "$OUT/c4_plate_under_water.png" \
   --md "$OUT/c4_plate_under_water.md" "${DIRS[@]}"
 cat "$OUT/c4_plate_under_water.md"
 log "report: $OUT/c4_plate_under_water.md, plot: $OUT/c4_plate_under_water.png"

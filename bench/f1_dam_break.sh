@@ -17,7 +17,7 @@
 set -euo pipefail
 . "$(dirname "${BASH_SOURCE[0]}")/sweep.bash"
 sweep_parse f1_dam_break --n "15 20 30" "$@"
-ROOT="$SWEEP_ROOT"
+
 . "$ROOT/bench/f1_run.bash"
 A=$F1_A
 calc() { f1_calc "$1"; }

@@ -13,27 +13,11 @@
 # About 5 min (seed) and 8 min (Faltinsen) on a shared 2-core machine.
 set -euo pipefail
 
-ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-RUN="$ROOT/build/bin/fsi-run"
-PY=/usr/bin/python3
-OUT="$ROOT/out/bench/f2_sloshing"
 THREADS=1
-REPORT=0
-EXTRA=()
-while [ $# -gt 0 ]; do
-  case "$1" in
-    --threads) THREADS="$2"; shift ;;
-    --report) REPORT=1 ;;
-    --set) EXTRA+=(--set "$2"); shift ;;
-    -*) echo "f2_sloshing: unknown option $1" >&2; exit 2 ;;
-    *) OUT="$1" ;;
-  esac
-  shift
-done
-mkdir -p "$OUT"
-log() { echo "[f2_sloshing] $*" >&2; }
+. "$(dirname "${BASH_SOURCE[0]}")/sweep.bash"
+sweep_parse f2_sloshing --n "" "$@"
 
-if [ "$REPORT" = 0 ]; then
+if [ "$RESUME" != 2 ]; then
   pids=()
   for name in seed faltinsen; do
     case_file="$ROOT/cases/f2_sloshing.ini"

@@ -8,15 +8,15 @@
 #   sweep_run DIR fsi-run-arguments...
 #     runs DIR (log DIR.txt) unless RESUME keeps it; a failed run is logged, not fatal:
 #     what it wrote is still compared.
-SWEEP_ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-RUN="$SWEEP_ROOT/build/bin/fsi-run"
+ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+RUN="$ROOT/build/bin/fsi-run"
 PY=/usr/bin/python3
 
 sweep_parse() {
   SWEEP_NAME="$1"; local list_option="$2"; LIST="$3"; shift 3
-  OUT="$SWEEP_ROOT/out/bench/$SWEEP_NAME"
+  OUT="$ROOT/out/bench/$SWEEP_NAME"
   RESUME=0
-  THREADS=2
+  THREADS="${THREADS:-2}"
   EXTRA=()
   while [ $# -gt 0 ]; do
     case "$1" in
