@@ -6,7 +6,7 @@
 
 For every output folder RUN_DIR (a run of cases/c2_elastic_gate.ini, any spacing) it
 reads the probe "tip" of probes.csv (the gate's lower end, mid-thickness) and compares
-its displacement with Antoci's experiment (/work/shared/data/antoci2007_gate_*_exp.csv;
+its displacement with Antoci's experiment (data/antoci2007_gate_*_exp.csv;
 positive magnitudes: x downstream = +tip_ux, y lift = +tip_uy). The simulation is
 interpolated linearly in time at the measured times within the simulated time (the
 y record's first point, t = -0.0008 s, a digitisation artefact, falls outside and is
@@ -29,7 +29,7 @@ import numpy as np
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import fsi_results  # noqa: E402
 
-DATA = "/work/shared/data"
+DATA = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "data")
 THICKNESS = 0.005                       # gate thickness T (m)
 SNAP_TIMES = (0.04, 0.08, 0.12, 0.16)
 
