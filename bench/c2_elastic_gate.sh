@@ -11,7 +11,9 @@
 # probe sits on the middle point of the gate's lowest row (of the middle two, the
 # downstream one). Writes
 # OUT/c2_elastic_gate.md (dx, particles, NRMSE of x and y, wall time),
-# OUT/c2_elastic_gate.png and OUT/c2_snapshots.png (bench/c2_elastic_gate.py).
+# OUT/c2_elastic_gate.png and OUT/c2_snapshots.png (bench/c2_elastic_gate.py), and the
+# accuracy against speed of the finished runs: OUT/accuracy_speed.csv and
+# OUT/c2_accuracy_speed.png (bench/accuracy_speed.py).
 # --resume keeps the runs of OUT that finished; --report runs nothing and compares the
 # runs in OUT (finished or not). --set is passed to every run.
 # Default N = 3 4 5 on 1 thread. T / dx = 2 is not worth running: its gate is 4 times too stiff (two points across).
@@ -41,6 +43,7 @@ done
   tee "$OUT/c2_elastic_gate.txt"
 
 REPORT="$OUT/c2_elastic_gate.md"
+echo "solvers,resolution,dx_m,particles,threads,wall_s,error" > "$OUT/accuracy_speed.csv"
 {
   echo "| dx | T / dx | fluid particles | solid points (gate + clamp) | end | NRMSE x (points) | NRMSE y (points) | largest ux (t) | largest uy (t) | wall time | threads |"
   echo "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |"
@@ -50,8 +53,14 @@ REPORT="$OUT/c2_elastic_gate.md"
     [ -n "$wt" ] || wt=$(awk '/^wall_time_s/ {print $2}' "$txt" | tail -1)
     thr=$(cat "$run/fluid.log" "$run/solid.log" 2>/dev/null | grep -o 'on [0-9]* thread(s)' | tail -1 | awk '{print $2}' || true)
     if grep -q "^fsi run: finished" "$txt"; then endst="t = $tend s"; else endst="unstable, last probe row t = $tend s"; fi
+    if grep -q "^fsi run: finished" "$txt" && [ "$nx" = 9 ]; then
+      echo "ULPH + NOSB-PD,T/dx=$(calc "round($ratio)"),$dx,$nf,${thr:-?},$wt,$ex" >> "$OUT/accuracy_speed.csv"
+    fi
     echo "| $dx m | $ratio | $nf | $ns | $endst | $(calc "'-' if $nx == 0 else '%.1f %%' % (100 * $ex)") ($nx / 9) | $(calc "'-' if $ny == 0 else '%.1f %%' % (100 * $ey)") ($ny / 9) | $pux m ($tux s) | $puy m ($tuy s) | ${wt} s | ${thr:-?} |"
   done
 } > "$REPORT"
 cat "$REPORT"
+"$PY" "$ROOT/bench/accuracy_speed.py" --title "C2 elastic gate: NRMSE of the gate's x against run time" \
+  --error-label "NRMSE of the free end's x" --goal 0.10 --png "$OUT/c2_accuracy_speed.png" \
+  "$OUT/accuracy_speed.csv"
 log "report: $REPORT, plots: $OUT/c2_elastic_gate.png, $OUT/c2_snapshots.png"

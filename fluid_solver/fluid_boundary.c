@@ -12,6 +12,7 @@ void fluid_boundary_init(fluid_boundary *b, int n_fixed)
 {
     *b = (fluid_boundary){0};
     b->n_fixed = n_fixed;
+    b->acceleration_in_pressure = 1;
 }
 
 void fluid_boundary_free(fluid_boundary *b)
@@ -104,6 +105,6 @@ void fluid_boundary_move(const fluid_boundary *b, fluid_particles *p, double tau
         const int i = b->n_fixed * FSI_DIM + k;
         p->x[i] = b->x_start[k] + tau * (b->v_start[k] + 0.5 * tau * a);
         p->v[i] = b->v_start[k] + tau * a;
-        p->boundary_acceleration[i] = a;
+        p->boundary_acceleration[i] = b->acceleration_in_pressure ? a : 0.0;
     }
 }

@@ -26,6 +26,8 @@ typedef struct {
     int capacity;
     double *x_start, *v_start;  /* the solid's state at t_k, n * FSI_DIM */
     double *acceleration;       /* a_k, n * FSI_DIM */
+    int acceleration_in_pressure;   /* a_k becomes p->boundary_acceleration (the a_S of
+                                     * 000 Eq. 52); 0: zero there (the motion keeps a_k) */
 } fluid_boundary;
 
 /* An empty boundary behind n_fixed particles (no allocation). */
@@ -41,7 +43,8 @@ int fluid_boundary_set(fluid_boundary *b, fluid_particles *p, const fsi_interfac
                        double rho0, char *msg, size_t msg_size);
 
 /* Puts the tail at t_k + tau: positions, velocities and accelerations
- * (p->boundary_acceleration, the a_S of 000 Eq. 52). */
+ * (p->boundary_acceleration, the a_S of 000 Eq. 52, zero unless
+ * acceleration_in_pressure). */
 void fluid_boundary_move(const fluid_boundary *b, fluid_particles *p, double tau);
 
 #endif

@@ -62,6 +62,12 @@ static const fsi_key_spec common_keys[] = {
     {"periodic_max", FSI_KEY_VECTOR, "m", ZERO_VECTOR, 0, 0, 0, NULL,
      "Upper corner of the period box; its length along a periodic axis must be at least "
      "three supports of the kernel."},
+    {"solid_acceleration", FSI_KEY_BOOL, "-", "true", 0, 0, 0, NULL,
+     "Coupled runs: whether the solid's acceleration a_S enters the pressure the fluid "
+     "gives the solid's particles (000 Eq. 52, p_S = ... - rho0 (g - a_S) . r). false: "
+     "only gravity, as for a fixed wall; for thin or light bodies, whose inner particles "
+     "the fluid reaches, the a_S term feeds the solid's own acceleration back into its load "
+     "one window late (an added-mass loop, docs/coupling.md)."},
     {"reorder_interval", FSI_KEY_INT, "-", "200", FSI_BOUND_MIN, 0, 0, NULL,
      "Every this many steps (at the next window's start) the fluid and wall particles are "
      "sorted by cell so that neighbours sit close in memory (a speed matter only: the "

@@ -331,6 +331,8 @@ static int setup(fluid_run *s, fsi_participant *part)
 
     s->n_fixed = p->n;
     fluid_coupling_init(&s->coupling, p->n, pr->density * pr->sound_speed);
+    s->coupling.boundary.acceleration_in_pressure =
+        fsi_case_get_bool(c, ROLE, "solid_acceleration", 1);
     s->reorder_interval = fsi_case_get_int(c, ROLE, "reorder_interval", 200);
     s->order = malloc((size_t)(p->n > 0 ? p->n : 1) * sizeof *s->order);
     for (int i = 0; s->order && i < p->n; i++)
