@@ -1,0 +1,23 @@
+#!/usr/bin/env bash
+# C5 dam break against a soil-like baffle that fails (docs/benchmarks.md C5,
+# docs/validation.md C5): cases/c5_soil_baffle.ini with bond failure and the same run
+# with --set solid.failure=false, side by side (one thread each), then the crack
+# initiation time and place and the damage snapshots (bench/c5_soil_baffle.py).
+#
+#   bench/c5_soil_baffle.sh [OUT] [--report] [--set k=v ...]
+#
+# Writes OUT/failure, OUT/no_failure (logs OUT/*.txt), OUT/c5_soil_baffle.md and
+# OUT/c5_soil_baffle.png. About 6 minutes on a quiet machine.
+set -euo pipefail
+THREADS=1
+. "$(dirname "${BASH_SOURCE[0]}")/sweep.bash"
+sweep_parse c5_soil_baffle --n "" "$@"
+
+sweep_run "$OUT/failure" "$ROOT/cases/c5_soil_baffle.ini" &
+sweep_run "$OUT/no_failure" "$ROOT/cases/c5_soil_baffle.ini" --set solid.failure=false &
+wait
+
+"$PY" "$ROOT/bench/c5_soil_baffle.py" --png "$OUT/c5_soil_baffle.png" --md "$OUT/c5_soil_baffle.md" \
+  "$OUT/failure" "$OUT/no_failure"
+cat "$OUT/c5_soil_baffle.md"
+log "report: $OUT/c5_soil_baffle.md, plot: $OUT/c5_soil_baffle.png"
