@@ -149,7 +149,8 @@ static int setup(solid_run *s, fsi_participant *part)
     s->interface_damping = new_vector(p->n, 1);
     s->integrator.particle_damping = s->interface_damping;
     if (!s->f_int || !s->f_ext || !s->f_ext_prev || !s->f_fluid || !s->p_fluid ||
-        !s->x_prev || !s->scratch || !s->interface_damping || solid_interface_init(&s->iface, p->n) != 0) {
+        !s->x_prev || !s->scratch || !s->interface_damping ||
+        solid_interface_init(&s->iface, p->n) != 0) {
         snprintf(s->msg, ms, "out of memory for %d solid particles", p->n);
         return -1;
     }
@@ -212,7 +213,9 @@ static int setup(solid_run *s, fsi_participant *part)
     return 0;
 }
 
-/* f_ext = prescribed loads at time t + the fluid's load of this window. */
+/* f_ext = prescribed loads at time t + the fluid's load of this window + the m c u
+ * half of the interface impedance (solid_interface_damping; the -m c v half is in the
+ * integrator). */
 static void external_forces(solid_run *s, double t, double *f_ext)
 {
     const solid_particles *p = &s->p;
