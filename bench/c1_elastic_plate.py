@@ -47,10 +47,8 @@ def main():
             continue
         pr = fsi_results.read_probes(run)
         dx = float(fsi_results.read_case(run)["solid"]["spacing"])
-        log = open(os.path.join(run, "run.log")).read()
-        wall = re.search(r"exit = ok \(([0-9.]+) s wall\)", log)
         runs.append(("dx = %g mm" % (1e3 * dx), pr["time"], pr["corner_ux"],
-                     float(wall.group(1)) if wall else None, dx))
+                     fsi_results.wall_time(run), dx))
     with open(a.md, "w") as md:
         md.write("| curve | first peak of u_x | at t | run to | wall time |\n| --- | --- | --- | --- | --- |\n")
         for label, t, u, wall, _ in runs:

@@ -5,7 +5,6 @@ plate theory, and the settled value (mean over the second half of the run).
 """
 import argparse
 import os
-import re
 
 import fsi_results
 
@@ -33,15 +32,6 @@ def plate_theory(case):
     return bending, bending + shear, T
 
 
-def grep(path, pattern, default=None):
-    try:
-        with open(path) as fh:
-            hits = re.findall(pattern, fh.read())
-        return hits[-1] if hits else default
-    except OSError:
-        return default
-
-
 def summary(run):
     case = fsi_results.read_case(run)
     delta, delta_shear, T = plate_theory(case)
@@ -51,11 +41,11 @@ def summary(run):
     t_end = t[-1]
     late = [u for tt, u in zip(t, uy) if tt >= 0.5 * t_end]
     settled = -sum(late) / len(late) if late else float("nan")
-    windows = grep(os.path.join(run, "run.log"), r"\nwindows = (\d+)")
-    substeps = grep(os.path.join(run, "solid.log"), r"performance: (\d+) sub-steps")
-    n_fluid = grep(os.path.join(run, "fluid.log"), r"\((\d+) fluid in")
-    n_solid = grep(os.path.join(run, "solid.log"), r"\] (\d+) particles")
-    wall = grep(os.path.join(run, "run.log"), r"exit = ok \(([0-9.]+) s wall\)")
+    windows = fsi_results.log_match(os.path.join(run, "run.log"), r"\nwindows = (\d+)")
+    substeps = fsi_results.log_match(os.path.join(run, "solid.log"), r"performance: (\d+) sub-steps")
+    n_fluid = fsi_results.log_match(os.path.join(run, "fluid.log"), r"\((\d+) fluid in")
+    n_solid = fsi_results.log_match(os.path.join(run, "solid.log"), r"\] (\d+) particles")
+    wall = fsi_results.wall_time(run)
     return dict(run=run, T_over_dx=T / dx, dx=dx, delta=delta, delta_shear=delta_shear,
                 settled=settled,
                 swing=(max(late) - min(late)) / 2 if late else float("nan"), t=t, uy=uy,
@@ -85,7 +75,7 @@ def main():
                                    r["windows"] or "?", per, 1e6 * r["settled"],
                                    100 * (r["settled"] / r["delta"] - 1),
                                    100 * (r["settled"] / r["delta_shear"] - 1), 1e6 * r["swing"],
-                                   (r["wall"] + " s") if r["wall"] else "?"))
+                                   "%.1f s" % r["wall"] if r["wall"] else "?"))
         if rows:
             md.write("\nPlate theory (003 Eq. 53): %.2f um; with the shear deflection of a "
                      "Timoshenko beam: %.2f um; settled = mean of -u_y over the second half of "

@@ -3,6 +3,7 @@ Shared by the bench/ scripts (post-processing only; run with /usr/bin/python3)."
 import configparser
 import csv
 import os
+import re
 
 
 def read_case(out_dir):
@@ -28,3 +29,20 @@ def read_last_frame(h5_path, fields):
         frames = sorted(f["frames"].keys())
         g = f["frames"][frames[-1]]
         return float(g.attrs["time"]), {k: g[k][()] for k in fields}
+
+
+def log_match(path, pattern, default=None):
+    """The first group of the last match of pattern in a log file (default if the file
+    or the match is missing)."""
+    try:
+        with open(path) as fh:
+            hits = re.findall(pattern, fh.read())
+    except OSError:
+        return default
+    return hits[-1] if hits else default
+
+
+def wall_time(out_dir):
+    """Wall time of a finished run from its run.log [s], or None."""
+    hit = log_match(os.path.join(out_dir, "run.log"), r"exit = ok \(([0-9.]+) s wall\)")
+    return float(hit) if hit else None

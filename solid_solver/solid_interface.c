@@ -18,7 +18,7 @@ int solid_interface_init(solid_interface_buffers *b, int n_particles)
     b->state.acceleration = malloc(v * sizeof(double));
     b->state.volume = malloc(n * sizeof(double));
     b->x_window = malloc(v * sizeof(double));
-    b->v_mean = malloc(v * sizeof(double));
+    b->v_mean = calloc(v, sizeof(double));   /* read (times 0) before a first gather */
     if (!b->surface || !b->received || !b->state.id || !b->state.position ||
         !b->state.velocity || !b->state.acceleration || !b->state.volume || !b->x_window ||
         !b->v_mean) {

@@ -55,6 +55,8 @@ typedef struct {
     double safety, energy_limit;
     double *f_int, *f_ext, *f_ext_prev, *f_fluid, *p_fluid, *x_prev, *scratch;
     double *interface_damping;      /* per particle: z A / m [1/s] (solid_interface.h) */
+    double *f_held;                 /* the force held over the window: the fluid's load
+                                     * plus the impedance's m c u (set once per window) */
     /* energy check */
     double energy0, work, work_in, energy_floor;
     double box_min[FSI_DIM], box_max[FSI_DIM];
@@ -94,6 +96,7 @@ static void free_run(solid_run *s)
     free(s->p_fluid);
     free(s->x_prev);
     free(s->interface_damping);
+    free(s->f_held);
     free(s->scratch);
 }
 
@@ -147,9 +150,10 @@ static int setup(solid_run *s, fsi_participant *part)
     s->x_prev = new_vector(p->n, FSI_DIM);
     s->scratch = new_vector(p->n, FSI_DIM);
     s->interface_damping = new_vector(p->n, 1);
+    s->f_held = new_vector(p->n, FSI_DIM);
     s->integrator.particle_damping = s->interface_damping;
     if (!s->f_int || !s->f_ext || !s->f_ext_prev || !s->f_fluid || !s->p_fluid ||
-        !s->x_prev || !s->scratch || !s->interface_damping ||
+        !s->x_prev || !s->scratch || !s->interface_damping || !s->f_held ||
         solid_interface_init(&s->iface, p->n) != 0) {
         snprintf(s->msg, ms, "out of memory for %d solid particles", p->n);
         return -1;
@@ -213,22 +217,25 @@ static int setup(solid_run *s, fsi_participant *part)
     return 0;
 }
 
-/* f_ext = prescribed loads at time t + the fluid's load of this window + the m c u
- * half of the interface impedance (solid_interface_damping; the -m c v half is in the
- * integrator). */
-static void external_forces(solid_run *s, double t, double *f_ext)
+/* f_held = the fluid's load of this window + the m c u half of the interface
+ * impedance (solid_interface_damping; the -m c v half is in the integrator). Both are
+ * constant over the window, so this is done once per window, not per sub-step. */
+static void hold_interface_force(solid_run *s)
 {
     const solid_particles *p = &s->p;
-    size_t nv = (size_t)p->n * FSI_DIM;
-    memcpy(f_ext, s->f_fluid, nv * sizeof *f_ext);
     for (int i = 0; i < p->n; i++) {
-        const double c = s->interface_damping[i];
-        if (c == 0.0)
-            continue;
-        const double m = p->density[i] * p->volume[i];
-        for (int d = 0; d < FSI_DIM; d++)
-            f_ext[i * FSI_DIM + d] += m * c * s->iface.v_mean[i * FSI_DIM + d];
+        const double mc = s->interface_damping[i] * p->density[i] * p->volume[i];
+        for (int d = 0; d < FSI_DIM; d++) {
+            const int k = i * FSI_DIM + d;
+            s->f_held[k] = s->f_fluid[k] + mc * s->iface.v_mean[k];
+        }
     }
+}
+
+/* f_ext = prescribed loads at time t + the force held over the window. */
+static void external_forces(solid_run *s, double t, double *f_ext)
+{
+    memcpy(f_ext, s->f_held, (size_t)s->p.n * FSI_DIM * sizeof *f_ext);
     solid_loads_add(&s->loads, t, f_ext);
 }
 
@@ -254,6 +261,7 @@ static int exchange(solid_run *s, fsi_participant *part, double dt_last)
         return -1;
     solid_interface_damping(&s->iface, &s->p, s->f_fluid, loads.impedance,
                             s->interface_damping);
+    hold_interface_force(s);
     return 0;
 }
 
