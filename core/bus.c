@@ -252,13 +252,13 @@ static void on_lcm_message(const lcm_recv_buf_t *rbuf, const char *channel, void
 }
 
 /* Hands the next recorded message due to the handler; 0 when none is due. */
-static int replay_one(fsi_bus *b)
+static int replay_one(fsi_bus *b, int waiting)
 {
     fsi_msg_type type;
     const void *bytes;
     int len;
     pthread_mutex_lock(&b->lock);
-    int due = fsi_replay_next_input(b->replay, &type, &bytes, &len);
+    int due = fsi_replay_next_input(b->replay, waiting, &type, &bytes, &len);
     pthread_mutex_unlock(&b->lock);
     /* The bytes stay valid until the next call, which only this thread makes. */
     if (due)
@@ -341,7 +341,7 @@ int fsi_bus_poll(fsi_bus *b, double timeout_s)
     if (b->replay) {
         /* Whoever polls waits for something; when the recording has nothing due
          * before this process's own next message, it never will. */
-        if (replay_one(b))
+        if (replay_one(b, 1))
             return 1;
         fsi_replay_explain_wait(b->replay, atomic_load(&b->heartbeat_window));
         return -1;
@@ -354,7 +354,7 @@ int fsi_bus_drain(fsi_bus *b)
 {
     int n = 0, rc;
     if (b->replay) {
-        while (replay_one(b))
+        while (replay_one(b, 0))
             n++;
         return n;
     }

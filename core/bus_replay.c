@@ -19,6 +19,12 @@ typedef struct {
     int window, iteration;
 } recorded;
 
+/* A relevant event read past the gate: an input, or an own message. */
+typedef struct {
+    recorded m;
+    int own;
+} lookahead_item;
+
 /* Where a (window, iteration) key stands; the last one seen per kind tells a new
  * message from a repeat (a resent copy, a repeated register, the 3 aborts). */
 typedef struct {
@@ -40,6 +46,11 @@ struct fsi_replay {
     recorded gate;
     int have_gate;
     recorded current;            /* the input last handed out */
+    /* Events read past the gate while looking for an input of the gate's window that
+     * the recorder logged after the gate: the recorder's order between senders is the
+     * order the datagrams reached it, not the order they were sent in. */
+    lookahead_item *lookahead;
+    int n_lookahead, lookahead_capacity;
     /* Own messages published before the log shows them: when a message was lost and
      * sent again on request, its first recorded copy comes after later ones. They
      * are compared when the read-ahead reaches that copy. */
@@ -104,20 +115,26 @@ static recorded copy_recorded(fsi_msg_type type, const lcm_eventlog_event_t *e,
     return r;
 }
 
+/* Makes room for one more element in a growing array of 'count' elements. */
+static void make_room(void **array, int count, int *capacity, size_t size)
+{
+    if (count < *capacity)
+        return;
+    int grown = *capacity ? 2 * *capacity : 16;
+    void *a = realloc(*array, (size_t)grown * size);
+    if (!a) {
+        fsi_error("replay: out of memory reading %s", "the traffic log");
+        exit(FSI_EXIT_RUN_FAILURE);
+    }
+    *array = a;
+    *capacity = grown;
+}
+
 static void enqueue(fsi_replay *r, recorded m)
 {
     if (r->queue_head == r->queue_count)
         r->queue_head = r->queue_count = 0;
-    if (r->queue_count == r->queue_capacity) {
-        int capacity = r->queue_capacity ? 2 * r->queue_capacity : 16;
-        recorded *q = realloc(r->queue, (size_t)capacity * sizeof *q);
-        if (!q) {
-            fsi_error("replay: out of memory reading %s", "the traffic log");
-            exit(FSI_EXIT_RUN_FAILURE);
-        }
-        r->queue = q;
-        r->queue_capacity = capacity;
-    }
+    make_room((void **)&r->queue, r->queue_count, &r->queue_capacity, sizeof *r->queue);
     r->queue[r->queue_count++] = m;
 }
 
@@ -153,15 +170,8 @@ static void keep_early(fsi_replay *r, fsi_msg_type type, const void *msg)
     const fsi_header_t *h = msg;
     int len = fsi_message_encoded_size(type, msg);
     recorded m = {type, len > 0 ? malloc((size_t)len) : NULL, len, h->window, h->iteration};
-    if (r->n_early == r->early_capacity) {
-        int capacity = r->early_capacity ? 2 * r->early_capacity : 8;
-        recorded *e = realloc(r->early, (size_t)capacity * sizeof *e);
-        if (e) {
-            r->early = e;
-            r->early_capacity = capacity;
-        }
-    }
-    if (!m.bytes || r->n_early == r->early_capacity ||
+    make_room((void **)&r->early, r->n_early, &r->early_capacity, sizeof *r->early);
+    if (!m.bytes ||
         fsi_message_encode(type, msg, m.bytes, len) != len) {
         fsi_error("replay: out of memory keeping %s of window %d", fsi_msg_name(type),
                   h->window);
@@ -192,41 +202,103 @@ static int compare_early(fsi_replay *r, recorded *own)
 }
 
 /* Sorts one logged event: an input, this participant's next own message, or
- * nothing (another run, another kind, a repeat, undecodable bytes). */
-static void take_event(fsi_replay *r, const lcm_eventlog_event_t *e)
+ * nothing (another run, another kind, a repeat, undecodable bytes); returns 1 and
+ * fills 'item' for the first two. */
+static int classify_event(fsi_replay *r, const lcm_eventlog_event_t *e, lookahead_item *item)
 {
     int type = fsi_msg_type_of_channel(e->channel);
     fsi_message m;
     if (type < 0 || fsi_message_decode((fsi_msg_type)type, e->data, (int)e->datalen, &m) != 0)
-        return;
+        return 0;
     const fsi_header_t *h = &m.header;
+    int relevant = 0;
     if (h->protocol_version == FSI_PROTOCOL_VERSION && h->run_id == r->run_id) {
         if (strcmp(h->sender, r->self) != 0) {
-            if (is_input((fsi_msg_type)type, &m, r->self))
-                enqueue(r, copy_recorded((fsi_msg_type)type, e, h));
-        } else if (is_compared_kind((fsi_msg_type)type) &&
-                   newer(&r->recorded_key[type], h->window, h->iteration)) {
-            recorded own = copy_recorded((fsi_msg_type)type, e, h);
-            if (!compare_early(r, &own)) {
-                r->gate = own;
-                r->have_gate = 1;
-            }
+            relevant = is_input((fsi_msg_type)type, &m, r->self);
+            item->own = 0;
+        } else {
+            relevant = is_compared_kind((fsi_msg_type)type) &&
+                       newer(&r->recorded_key[type], h->window, h->iteration);
+            item->own = 1;
         }
+        if (relevant)
+            item->m = copy_recorded((fsi_msg_type)type, e, h);
     }
     fsi_message_cleanup((fsi_msg_type)type, &m);
+    return relevant;
 }
 
-/* Reads the log up to this participant's next own message, or to its end. */
-static void read_ahead(fsi_replay *r)
+static void take_item(fsi_replay *r, lookahead_item item)
 {
-    while (!r->have_gate && !r->at_end) {
+    if (!item.own)
+        enqueue(r, item.m);
+    else if (!compare_early(r, &item.m)) {
+        r->gate = item.m;
+        r->have_gate = 1;
+    }
+}
+
+/* The next relevant event of the log itself; 0 at its end. */
+static int read_log_item(fsi_replay *r, lookahead_item *item)
+{
+    while (!r->at_end) {
         lcm_eventlog_event_t *e = lcm_eventlog_read_next_event(r->log);
         if (!e) {
             r->at_end = 1;
             break;
         }
-        take_event(r, e);
+        int relevant = classify_event(r, e, item);
         lcm_eventlog_free_event(e);
+        if (relevant)
+            return 1;
+    }
+    return 0;
+}
+
+/* The next relevant logged event, from the look-ahead first; 0 at the log's end. */
+static int next_item(fsi_replay *r, lookahead_item *item)
+{
+    if (r->n_lookahead == 0)
+        return read_log_item(r, item);
+    *item = r->lookahead[0];
+    memmove(r->lookahead, r->lookahead + 1, (size_t)--r->n_lookahead * sizeof *item);
+    return 1;
+}
+
+/* Reads the log up to this participant's next own message, or to its end. */
+static void read_ahead(fsi_replay *r)
+{
+    lookahead_item item;
+    while (!r->have_gate && next_item(r, &item))
+        take_item(r, item);
+}
+
+/* How far past the gate an input of the gate's window is looked for: the recorder
+ * can log a datagram after others sent up to a few windows later, never thousands. */
+enum { LOOKAHEAD_LIMIT = 4096 };
+
+/* A participant waits with nothing due before the gate: an input of the gate's
+ * window (or an earlier one) logged after the gate is due now, since the participant
+ * could not have published the gate without it. Inputs of later windows and own
+ * messages stay in order. */
+static void take_late_input(fsi_replay *r)
+{
+    for (int i = 0;; i++) {
+        if (i == r->n_lookahead) {
+            lookahead_item item;
+            if (r->n_lookahead >= LOOKAHEAD_LIMIT || !read_log_item(r, &item))
+                return;
+            make_room((void **)&r->lookahead, r->n_lookahead, &r->lookahead_capacity,
+                      sizeof *r->lookahead);
+            r->lookahead[r->n_lookahead++] = item;
+        }
+        lookahead_item *it = &r->lookahead[i];
+        if (!it->own && it->m.window <= r->gate.window) {
+            enqueue(r, it->m);
+            memmove(it, it + 1, (size_t)(r->n_lookahead - i - 1) * sizeof *it);
+            r->n_lookahead--;
+            return;
+        }
     }
 }
 
@@ -265,11 +337,14 @@ fsi_replay *fsi_replay_open(const char *log_path, const char *self, int64_t run_
     return r;
 }
 
-int fsi_replay_next_input(fsi_replay *r, fsi_msg_type *type, const void **bytes, int *len)
+int fsi_replay_next_input(fsi_replay *r, int waiting, fsi_msg_type *type, const void **bytes,
+                          int *len)
 {
     free(r->current.bytes);
     r->current.bytes = NULL;
     read_ahead(r);
+    if (waiting && r->queue_head == r->queue_count && r->have_gate)
+        take_late_input(r);
     if (r->queue_head == r->queue_count)
         return 0;
     r->current = r->queue[r->queue_head++];
@@ -365,6 +440,9 @@ void fsi_replay_free(fsi_replay *r)
     for (int i = 0; i < r->n_early; i++)
         free(r->early[i].bytes);
     free(r->early);
+    for (int i = 0; i < r->n_lookahead; i++)
+        free(r->lookahead[i].m.bytes);
+    free(r->lookahead);
     free(r->gate.bytes);
     free(r->current.bytes);
     if (r->log)

@@ -31,8 +31,12 @@ fsi_replay *fsi_replay_open(const char *log_path, const char *self, int64_t run_
 
 /* The next recorded message due for this participant: returns 1 with its kind and
  * encoded bytes (valid until the next call), or 0 when nothing is due before this
- * participant publishes its next recorded message. */
-int fsi_replay_next_input(fsi_replay *r, fsi_msg_type *type, const void **bytes, int *len);
+ * participant publishes its next recorded message. A participant that is 'waiting'
+ * (blocked until a message comes) with nothing due also gets an input of that next
+ * message's window logged after it: the recorder logs datagrams of different senders
+ * in the order they reached it, not in the order they were sent. */
+int fsi_replay_next_input(fsi_replay *r, int waiting, fsi_msg_type *type, const void **bytes,
+                          int *len);
 
 /* Compares a message this participant publishes (an fsi_<kind>_t with its header
  * filled in) with the recording; kinds that only keep the bus alive are skipped. */

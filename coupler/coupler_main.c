@@ -172,13 +172,15 @@ static void take_done(coupler *c, participant_info *p, const fsi_done_t *d)
     }
     p->done_window = d->header.window;
     p->dt_proposed = d->dt_next_max;
-    memcpy(p->probe_values, d->probe_values, (size_t)d->n_probes * sizeof(double));
+    if (d->n_probes > 0)   /* an empty array may arrive as NULL */
+        memcpy(p->probe_values, d->probe_values, (size_t)d->n_probes * sizeof(double));
     if (d->status == FSI_STATUS_FINISHED) {
         p->finished = 1;
         p->n_stats = d->n_stats;
         p->stat_names = copy_strings(d->stat_names, d->n_stats);
         p->stat_values = malloc((size_t)(d->n_stats > 0 ? d->n_stats : 1) * sizeof(double));
-        memcpy(p->stat_values, d->stat_values, (size_t)d->n_stats * sizeof(double));
+        if (d->n_stats > 0)
+            memcpy(p->stat_values, d->stat_values, (size_t)d->n_stats * sizeof(double));
     }
 }
 

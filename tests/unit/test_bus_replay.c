@@ -74,6 +74,16 @@ static fsi_done_t done(double *value)
     return d;
 }
 
+static fsi_welcome_t welcome(const char *participant)
+{
+    fsi_welcome_t w = {0};
+    w.participant = (char *)participant;
+    w.n_participants = 2;
+    w.participant_names = names;
+    w.participant_roles = roles;
+    return w;
+}
+
 static fsi_step_t step(double t, double dt)
 {
     fsi_step_t s = {0};
@@ -92,13 +102,9 @@ static void write_log(const char *path)
     put(log, FSI_MSG_REGISTER, &r, "fluid", RUN, -1, 1);
     fsi_register_t again = reg("recorded-host", 100);
     put(log, FSI_MSG_REGISTER, &again, "fluid", RUN, -1, 2);
-    fsi_welcome_t w = {0};
-    w.participant = "solid";
-    w.n_participants = 2;
-    w.participant_names = names;
-    w.participant_roles = roles;
+    fsi_welcome_t w = welcome("solid");
     put(log, FSI_MSG_WELCOME, &w, "coupler", RUN, -1, 1);
-    w.participant = "fluid";
+    w = welcome("fluid");
     put(log, FSI_MSG_WELCOME, &w, "coupler", RUN, -1, 2);
     fsi_step_t s0 = step(0.0, 0.0);
     put(log, FSI_MSG_STEP, &s0, "coupler", RUN, 0, 3);
@@ -121,27 +127,62 @@ static void write_log(const char *path)
     lcm_eventlog_destroy(log);
 }
 
-/* The kinds of the inputs due now, as a string of kind initials. */
-static void due(fsi_replay *r, char *kinds, size_t len)
+/* The solid's side of a window whose fluid_load the recorder logged after the
+ * solid's done of that window (datagrams from two senders reach the recorder in
+ * either order), with step 1 before that load. */
+static void write_late_input_log(const char *path)
+{
+    lcm_eventlog_t *log = lcm_eventlog_create(path, "w");
+    fsi_welcome_t w = welcome("solid");
+    put(log, FSI_MSG_WELCOME, &w, "coupler", RUN, -1, 1);
+    fsi_step_t s0 = step(0.0, 0.0);
+    put(log, FSI_MSG_STEP, &s0, "coupler", RUN, 0, 2);
+    fsi_solid_state_t ss = {0};
+    ss.dim = FSI_DIM;
+    put(log, FSI_MSG_SOLID_STATE, &ss, "solid", RUN, 0, 1);
+    double value = probe;
+    fsi_done_t d = done(&value);
+    put(log, FSI_MSG_DONE, &d, "solid", RUN, 0, 2);
+    fsi_step_t s1 = step(0.0, 1e-3);
+    put(log, FSI_MSG_STEP, &s1, "coupler", RUN, 1, 3);
+    fsi_fluid_load_t l = load();
+    put(log, FSI_MSG_FLUID_LOAD, &l, "fluid", RUN, 0, 1);
+    lcm_eventlog_destroy(log);
+}
+
+/* The kinds of the inputs due now, as a string of kind initials; 'waiting' as a
+ * participant blocked in fsi_bus_poll, else as one draining the bus. */
+static void due_as(fsi_replay *r, int waiting, char *kinds, size_t len)
 {
     size_t n = 0;
     fsi_msg_type type;
     const void *bytes;
     int size;
-    while (n + 1 < len && fsi_replay_next_input(r, &type, &bytes, &size))
+    while (n + 1 < len && fsi_replay_next_input(r, waiting, &type, &bytes, &size))
         kinds[n++] = fsi_msg_name(type)[0];
     kinds[n] = '\0';
 }
 
-static void publish(fsi_replay *r, fsi_msg_type type, void *msg, int window, int64_t seq)
+static void due(fsi_replay *r, char *kinds, size_t len)
+{
+    due_as(r, 0, kinds, len);
+}
+
+static void publish_as(fsi_replay *r, const char *self, fsi_msg_type type, void *msg,
+                       int window, int64_t seq)
 {
     fsi_header_t *h = msg;
     h->protocol_version = FSI_PROTOCOL_VERSION;
     h->run_id = RUN;
     h->window = window;
     h->seq = seq;
-    h->sender = "fluid";
+    h->sender = (char *)self;
     fsi_replay_compare(r, type, msg);
+}
+
+static void publish(fsi_replay *r, fsi_msg_type type, void *msg, int window, int64_t seq)
+{
+    publish_as(r, "fluid", type, msg, window, seq);
 }
 
 static void read_report(const char *path, char *text, size_t len)
@@ -209,5 +250,29 @@ int main(void)
     CHECK(strstr(text, "first_difference = done of window 0 is recorded but was not "
                        "published\n") != NULL,
           "report: %s", text);
+
+    /* The load of window 0, logged after the solid's done of window 0 and after
+     * step 1, is due before that done; step 1 only after it. */
+    write_late_input_log(log_path);
+    r = fsi_replay_open(log_path, "solid", RUN);
+    CHECK(r != NULL, "cannot open the late-input replay");
+    if (!r)
+        return unit_check_report("test_bus_replay");
+    due(r, kinds, sizeof kinds);
+    CHECK(strcmp(kinds, "ws") == 0, "late input: due at the start: '%s'", kinds);
+    fsi_solid_state_t state = {0};
+    state.dim = FSI_DIM;
+    publish_as(r, "solid", FSI_MSG_SOLID_STATE, &state, 0, 1);
+    due(r, kinds, sizeof kinds);
+    CHECK(strcmp(kinds, "") == 0, "late input: due to a drain before the done: '%s'", kinds);
+    due_as(r, 1, kinds, sizeof kinds);
+    CHECK(strcmp(kinds, "f") == 0, "late input: due to a wait before the done: '%s'", kinds);
+    double same = probe;
+    fsi_done_t solid_done = done(&same);
+    publish_as(r, "solid", FSI_MSG_DONE, &solid_done, 0, 2);
+    due(r, kinds, sizeof kinds);
+    CHECK(strcmp(kinds, "s") == 0, "late input: due after the done: '%s'", kinds);
+    CHECK(fsi_replay_finish(r) == 0, "late input: differences in an identical replay");
+    fsi_replay_free(r);
     return unit_check_report("test_bus_replay");
 }
