@@ -33,16 +33,19 @@ int solid_geometry_read(solid_geometry *g, const fsi_case *c, const char *role, 
 {
     memset(g, 0, sizeof *g);
     g->spacing = fsi_case_get_real(c, role, "spacing", 0.0);
-    const char **blocks = NULL, **regions = NULL, **probes = NULL;
+    const char **blocks = NULL, **regions = NULL, **probes = NULL, **cracks = NULL;
     int nb = fsi_case_object_list(c, role, "block", &blocks);
     int nr = fsi_case_object_list(c, role, "region", &regions);
     int np = fsi_case_object_list(c, role, "probe", &probes);
-    if (nb < 0 || nr < 0 || np < 0)
+    int nc = fsi_case_object_list(c, role, "crack", &cracks);
+    if (nb < 0 || nr < 0 || np < 0 || nc < 0)
         goto out_of_memory;
     g->blocks = nb ? calloc((size_t)nb, sizeof *g->blocks) : NULL;
     g->regions = nr ? calloc((size_t)nr, sizeof *g->regions) : NULL;
     g->probes = np ? calloc((size_t)np, sizeof *g->probes) : NULL;
-    if ((nb && !g->blocks) || (nr && !g->regions) || (np && !g->probes))
+    g->cracks = nc ? calloc((size_t)nc, sizeof *g->cracks) : NULL;
+    if ((nb && !g->blocks) || (nr && !g->regions) || (np && !g->probes) ||
+        (nc && !g->cracks))
         goto out_of_memory;
 
     g->n_blocks = nb;
@@ -73,15 +76,23 @@ int solid_geometry_read(solid_geometry *g, const fsi_case *c, const char *role, 
         g->probes[i].section = probes[i];
         read_vector(c, probes[i], "point", g->probes[i].point);
     }
+    g->n_cracks = nc;
+    for (int i = 0; i < nc; i++) {
+        g->cracks[i].section = cracks[i];
+        read_vector(c, cracks[i], "from", g->cracks[i].from);
+        read_vector(c, cracks[i], "to", g->cracks[i].to);
+    }
     free(blocks);
     free(regions);
     free(probes);
+    free(cracks);
     return 0;
 
 out_of_memory:
     free(blocks);
     free(regions);
     free(probes);
+    free(cracks);
     solid_geometry_free(g);
     snprintf(msg, msg_size, "out of memory reading the solid's geometry");
     return -1;
@@ -92,7 +103,27 @@ void solid_geometry_free(solid_geometry *g)
     free(g->blocks);
     free(g->regions);
     free(g->probes);
+    free(g->cracks);
     memset(g, 0, sizeof *g);
+}
+
+#if FSI_DIM == 2
+/* Twice the signed area of the triangle a, b, c: > 0 when c lies left of a -> b. */
+static double orientation(const double *a, const double *b, const double *c)
+{
+    return (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+}
+#endif
+
+int solid_crack_cuts(const double *p, const double *q, const double *a, const double *b)
+{
+#if FSI_DIM == 2
+    return orientation(a, b, p) * orientation(a, b, q) < 0.0 &&
+           orientation(p, q, a) * orientation(p, q, b) <= 0.0;
+#else
+    (void)p, (void)q, (void)a, (void)b;
+    return 0;
+#endif
 }
 
 double solid_block_spacings(const solid_block *b, double spacing, int axis)

@@ -8,6 +8,9 @@
  * carry exactly its volume (each dx^FSI_DIM). Touching blocks continue each other's
  * lattice when their corners lie on a common grid.
  *
+ * Cracks (2D): a segment; bonds of a bond-based model whose reference segment
+ * crosses it are broken from the start (a pre-crack or notch of zero width).
+ *
  * Regions: a point belongs to a region when it lies in the closed box
  * [min - tol, max + tol], tol = 1e-6 dx (so a box drawn on the lattice's faces
  * selects the points inside it, immune to round-off). Points in a 'remove' region are
@@ -55,19 +58,30 @@ typedef struct {
 } solid_probe_point;
 
 typedef struct {
+    const char *section;        /* "solid.crack NAME" */
+    double from[FSI_DIM], to[FSI_DIM];
+} solid_crack;
+
+typedef struct {
     double spacing;
-    int n_blocks, n_regions, n_probes;
+    int n_blocks, n_regions, n_probes, n_cracks;
     solid_block *blocks;
     solid_region *regions;
     solid_probe_point *probes;
+    solid_crack *cracks;
 } solid_geometry;
 
-/* Reads [role] spacing and the role's block, region and probe sections of a
+/* Reads [role] spacing and the role's block, region, probe and crack sections of a
  * validated case (values missing in an unvalidated case read as 0). Returns 0, or
  * -1 with a message when memory runs out. */
 int solid_geometry_read(solid_geometry *g, const fsi_case *c, const char *role, char *msg,
                         size_t msg_size);
 void solid_geometry_free(solid_geometry *g);
+
+/* 1 when the segment p-q crosses the crack a-b (2D; always 0 in 3D). A segment that
+ * only touches the crack's line at p or q does not cross it: points on the line
+ * keep their bonds on both sides. A crack that ends on the segment does. */
+int solid_crack_cuts(const double *p, const double *q, const double *a, const double *b);
 
 /* (max - min) / spacing along 'axis': the block's length in spacings, not rounded. */
 double solid_block_spacings(const solid_block *b, double spacing, int axis);

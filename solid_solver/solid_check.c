@@ -188,6 +188,88 @@ done:
     free(nearest_x);
 }
 
+/* Distance from x to the segment a-b. */
+static double distance_to_segment(const double *x, const double *a, const double *b)
+{
+    double ab2 = 0.0, t = 0.0, d2 = 0.0;
+    for (int d = 0; d < FSI_DIM; d++) {
+        ab2 += (b[d] - a[d]) * (b[d] - a[d]);
+        t += (x[d] - a[d]) * (b[d] - a[d]);
+    }
+    t = ab2 > 0.0 ? fmin(fmax(t / ab2, 0.0), 1.0) : 0.0;
+    for (int d = 0; d < FSI_DIM; d++) {
+        const double e = x[d] - (a[d] + t * (b[d] - a[d]));
+        d2 += e * e;
+    }
+    return sqrt(d2);
+}
+
+/* 1 when the crack separates at least one pair of neighbouring surviving lattice
+ * points (at most a lattice diagonal apart): a crack outside the body, or lying on a
+ * lattice row, breaks nothing and is surely a mistake. Only points within a diagonal
+ * of the crack can be such a pair. */
+static int crack_cuts_lattice(const solid_geometry *g, const solid_crack *crack, int *out_of_memory)
+{
+    const double dx = g->spacing, reach = sqrt((double)FSI_DIM) * dx * (1.0 + SOLID_GEOMETRY_TOL);
+    double(*near)[FSI_DIM] = NULL, x[FSI_DIM];
+    long n = 0, capacity = 0;
+    int cuts = 0;
+    for (int b = 0; b < g->n_blocks; b++) {
+        long nb = solid_block_points(&g->blocks[b]);
+        for (long j = 0; j < nb; j++) {
+            solid_block_point(&g->blocks[b], dx, j, x);
+            if (distance_to_segment(x, crack->from, crack->to) > reach ||
+                solid_geometry_removed(g, x))
+                continue;
+            if (n == capacity) {
+                capacity = capacity ? 2 * capacity : 64;
+                double(*grown)[FSI_DIM] = realloc(near, (size_t)capacity * sizeof *near);
+                if (!grown) {
+                    *out_of_memory = 1;
+                    free(near);
+                    return 0;
+                }
+                near = grown;
+            }
+            memcpy(near[n++], x, sizeof x);
+        }
+    }
+    for (long i = 0; i < n && !cuts; i++)
+        for (long j = i + 1; j < n && !cuts; j++) {
+            double d2 = 0.0;
+            for (int d = 0; d < FSI_DIM; d++)
+                d2 += (near[j][d] - near[i][d]) * (near[j][d] - near[i][d]);
+            cuts = d2 <= reach * reach &&
+                   solid_crack_cuts(near[i], near[j], crack->from, crack->to);
+        }
+    free(near);
+    return cuts;
+}
+
+static void check_cracks(fsi_case_checker *k, const solid_geometry *g)
+{
+    for (int i = 0; i < g->n_cracks; i++) {
+        const solid_crack *crack = &g->cracks[i];
+        if (FSI_DIM != 2) {
+            fsi_case_problem(k, crack->section, NULL,
+                             "cracks are segments of 2D builds; this build is %dD", FSI_DIM);
+            continue;
+        }
+        if (distance_to_segment(crack->from, crack->to, crack->to) <
+            SOLID_GEOMETRY_TOL * g->spacing) {
+            fsi_case_problem(k, crack->section, "to", "equals 'from': the crack has no length");
+            continue;
+        }
+        int out_of_memory = 0;
+        if (!crack_cuts_lattice(g, crack, &out_of_memory))
+            fsi_case_problem(k, crack->section, NULL,
+                             out_of_memory ? "out of memory checking where the crack lies"
+                                           : "separates no two neighbouring particles: it "
+                                             "lies outside the solid or along a lattice "
+                                             "row (draw it between rows)");
+    }
+}
+
 static void check_mode(fsi_case_checker *k, const char *role)
 {
     const char *iv = fsi_case_get(k->c, role, "initial_velocity");
@@ -216,8 +298,10 @@ int solid_geometry_check(const fsi_case *c, const char *role, FILE *errors)
                          solid_geometry_lattice_size(&g), (double)SOLID_MAX_LATTICE);
     /* Counting on blocks of the wrong size or with inverted boxes would only repeat
      * those errors as "selects no particle". */
-    if (k.errors == 0)
+    if (k.errors == 0) {
         count_selections(&k, &g);
+        check_cracks(&k, &g);
+    }
     check_mode(&k, role);
     solid_geometry_free(&g);
     return k.errors;

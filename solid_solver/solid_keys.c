@@ -105,12 +105,28 @@ const fsi_key_table fsi_solid_probe_keys = {
     "solid.probe", "Displacement and velocity of one particle, recorded in probes.csv.",
     probe_keys, (int)(sizeof probe_keys / sizeof probe_keys[0])};
 
+static const fsi_key_spec crack_keys[] = {
+    {"from", FSI_KEY_VECTOR, "m", NULL, 0, 0, 0, NULL,
+     "One end of the crack, a straight segment in the reference configuration (2D builds "
+     "only)."},
+    {"to", FSI_KEY_VECTOR, "m", NULL, 0, 0, 0, NULL,
+     "The other end; every bond whose reference segment crosses the crack is broken from "
+     "the start, whether failure is on or not. Draw it between lattice rows (a point on "
+     "the crack's line keeps its bonds to both sides)."},
+};
+
+const fsi_key_table fsi_solid_crack_keys = {
+    "solid.crack", "A pre-existing crack: a segment that the bonds across it do not span.",
+    crack_keys, (int)(sizeof crack_keys / sizeof crack_keys[0])};
+
 const fsi_object_kind fsi_solid_object_kinds[FSI_SOLID_N_OBJECT_KINDS] = {
     {"block", "Boxes of material; touching blocks form one body.", &fsi_solid_block_keys, 1},
     {"region", "Clamps, loads and removed parts (applied in file order after removal).",
      &fsi_solid_region_keys, 0},
     {"probe", "Particles whose displacement and velocity go to probes.csv.",
      &fsi_solid_probe_keys, 0},
+    {"crack", "Pre-existing cracks (notches of zero width) of a bond-based model.",
+     &fsi_solid_crack_keys, 0},
 };
 
 const int fsi_solid_n_object_kinds =

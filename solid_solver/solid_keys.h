@@ -25,15 +25,16 @@ extern const fsi_key_table fsi_solid_common_keys;
 #define SOLID_TIME_STEP_SAFETY_MAX 4.0
 
 /* Keys of the object sections [solid.block NAME], [solid.region NAME],
- * [solid.probe NAME]. */
+ * [solid.probe NAME], [solid.crack NAME]. */
 extern const fsi_key_table fsi_solid_block_keys;
 extern const fsi_key_table fsi_solid_region_keys;
 extern const fsi_key_table fsi_solid_probe_keys;
+extern const fsi_key_table fsi_solid_crack_keys;
 
-/* block (at least one), region, probe. The count is a macro too, so that a
+/* block (at least one), region, probe, crack. The count is a macro too, so that a
  * registry's static solver table can use it (an extern const int is not a constant
  * expression in C). */
-#define FSI_SOLID_N_OBJECT_KINDS 3
+#define FSI_SOLID_N_OBJECT_KINDS 4
 extern const fsi_object_kind fsi_solid_object_kinds[FSI_SOLID_N_OBJECT_KINDS];
 extern const int fsi_solid_n_object_kinds;
 

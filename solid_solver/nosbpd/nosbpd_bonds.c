@@ -5,6 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "geometry.h"
 #include "neighbour_grid.h"
 
 double nosbpd_influence_value(nosbpd_influence kind, double r, double delta)
@@ -115,6 +116,22 @@ int nosbpd_bonds_build(nosbpd_bonds *b, const double *x0, const double *volume, 
     }
     fsi_grid_free(&grid);
     return 0;
+}
+
+int64_t nosbpd_bonds_cut(nosbpd_bonds *b, const double *x0, const double *from,
+                         const double *to)
+{
+    int64_t pairs = 0;
+    for (int i = 0; i < b->n_points; i++)
+        for (int64_t k = b->offset[i]; k < b->offset[i + 1]; k++) {
+            const int j = b->neighbour[k];
+            if (b->intact[k] &&
+                solid_crack_cuts(x0 + (int64_t)i * FSI_DIM, x0 + (int64_t)j * FSI_DIM, from, to)) {
+                b->intact[k] = 0;
+                pairs += i < j;
+            }
+        }
+    return pairs;
 }
 
 nosbpd_full_family nosbpd_full_family_of_lattice(double delta, double dx, nosbpd_influence kind)

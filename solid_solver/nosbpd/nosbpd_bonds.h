@@ -49,6 +49,12 @@ int nosbpd_bonds_build(nosbpd_bonds *b, const double *x0, const double *volume, 
 
 void nosbpd_bonds_free(nosbpd_bonds *b);
 
+/* Breaks every bond whose reference segment crosses the crack from-to
+ * (solid_crack_cuts); returns how many pairs it broke (each pair is two directed
+ * bonds). */
+int64_t nosbpd_bonds_cut(nosbpd_bonds *b, const double *x0, const double *from,
+                         const double *to);
+
 /* The family of a point deep inside a regular lattice of spacing dx, over the
  * integer lattice vectors n != 0 with |n| dx within the horizon (the same test as
  * the build): its bond count, and the sums of V / |xi| and omega V with V = dx^DIM

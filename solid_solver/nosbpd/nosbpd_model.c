@@ -6,6 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "geometry.h"
 #include "nosbpd_failure.h"
 #include "nosbpd_internal.h"
 #include "nosbpd_keys.h"
@@ -130,6 +131,24 @@ static double stable_step(const solid_model *m, const solid_particles *p)
     return dt;
 }
 
+/* Breaks the bonds across the case's [solid.crack] segments (a validated case has
+ * checked that each separates neighbouring points). Returns 0, or -1 with msg. */
+static int cut_cracks(solid_model *m, const fsi_case *c, const solid_particles *p, char *msg,
+                      size_t msg_size)
+{
+    solid_geometry g;
+    if (solid_geometry_read(&g, c, SECTION, msg, msg_size) != 0)
+        return -1;
+    for (int i = 0; i < g.n_cracks; i++) {
+        const int64_t pairs = nosbpd_bonds_cut(&m->bonds, p->x0, g.cracks[i].from,
+                                               g.cracks[i].to);
+        fprintf(stderr, "nosbpd: [%s] breaks %lld bonds from the start\n", g.cracks[i].section,
+                (long long)pairs);
+    }
+    solid_geometry_free(&g);
+    return 0;
+}
+
 solid_model *solid_model_create(const fsi_case *c, const solid_particles *p, char *msg,
                                 size_t msg_size)
 {
@@ -159,6 +178,11 @@ solid_model *solid_model_create(const fsi_case *c, const solid_particles *p, cha
                            m->influence) != 0) {
         snprintf(msg, msg_size, "nosbpd: cannot build the bonds of %d points (out of memory "
                  "or a reference position is not finite)", p->n);
+        free(m);
+        return NULL;
+    }
+    if (cut_cracks(m, c, p, msg, msg_size) != 0) {
+        nosbpd_bonds_free(&m->bonds);
         free(m);
         return NULL;
     }

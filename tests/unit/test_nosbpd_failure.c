@@ -7,6 +7,7 @@
  *  - a point left with collinear bonds (or born with them) produces no NaN, is
  *    flagged and counted, and carries no stress;
  *  - crack faces become surface points;
+ *  - a [solid.crack] breaks exactly the bonds that cross it, with failure off too;
  *  - s0 from the fracture energy (the 2D forms of nosbpd_failure.h), and
  *    critical_stretch winning over fracture_energy; failure without either is an
  *    error. */
@@ -277,10 +278,52 @@ static void check_singular_at_creation(void)
     free(force);
 }
 
+/* A pre-crack from the left edge along y = 0.05 (between rows 4 and 5), 0.082 m
+ * long: exactly the bonds whose segment crosses that line within 0 <= x <= 0.082
+ * break at creation, with failure off; damage is the broken volume fraction. */
+static void check_precrack(void)
+{
+    if (FSI_DIM != 2)
+        return;
+    const double y_crack = 0.05, x_end = 0.082;
+    solid_particles *p = test_lattice(20, 10, 1, 0.01, 1000.0);
+    char text[512];
+    snprintf(text, sizeof text, "%s[solid.crack notch]\nfrom = 0, %g\nto = %g, %g\n",
+             CASE_BASE, y_crack, x_end, y_crack);
+    solid_model *m = test_model(text, p);
+    const nosbpd_bonds *b = nosbpd_model_bonds(m);
+    int64_t expected = 0, wrong = 0;
+    for (int i = 0; i < p->n; i++)
+        for (int64_t q = b->offset[i]; q < b->offset[i + 1]; q++) {
+            const double *xi = p->x0 + i * FSI_DIM, *xj = p->x0 + b->neighbour[q] * FSI_DIM;
+            int cut = 0;
+            if ((xi[1] - y_crack) * (xj[1] - y_crack) < 0.0) {
+                const double x = xi[0] + (y_crack - xi[1]) / (xj[1] - xi[1]) * (xj[0] - xi[0]);
+                cut = x >= 0.0 && x <= x_end;
+            }
+            expected += cut;
+            wrong += cut == b->intact[q];
+        }
+    CHECK(expected > 0, "the crack should cut bonds");
+    CHECK(wrong == 0, "%ld bonds in the wrong state next to a pre-crack (%ld cut expected)",
+          (long)wrong, (long)expected);
+    CHECK(nosbpd_broken_bond_count(m) == 0, "pre-cut bonds counted as broken by failure: %ld",
+          (long)nosbpd_broken_bond_count(m));
+    const double *damage = nosbpd_damage(m);
+    const int next_to_crack = 2 + 20 * 4, far_away = 15 + 20 * 8;
+    CHECK(damage[next_to_crack] > 0.2 && damage[next_to_crack] < 0.5,
+          "damage %g next to the crack (expected about 0.3, the share of the family across "
+          "it)", damage[next_to_crack]);
+    CHECK(damage[far_away] == 0.0, "damage %g far from the crack", damage[far_away]);
+    solid_model_free(m);
+    test_lattice_free(p);
+}
+
 int main(void)
 {
     check_breaking();
     check_crack_surface();
+    check_precrack();
     check_critical_stretch();
     check_singular_at_creation();
     return unit_check_report("nosbpd failure");

@@ -182,7 +182,7 @@ static void test_lattice(void)
     CHECK(fabs(solid_block_spacings(&b, dx, 0) - 100.0) < 1e-9, "block length in spacings");
 
     /* Total volume equals the block's: L / dx points of dx^DIM each. */
-    solid_geometry g = {dx, 1, 0, 0, &b, NULL, NULL};
+    solid_geometry g = {.spacing = dx, .n_blocks = 1, .blocks = &b};
     solid_particles p;
     char msg[256];
     CHECK(solid_geometry_build(&g, 2400.0, &p, NULL, msg, sizeof msg) == 0, "build: %s", msg);
@@ -223,7 +223,7 @@ static void test_regions(void)
     r[2].force[1] = -100.0;
     r[2].ramp_time = 0.5;
     r[3].force[0] = 30.0;
-    solid_geometry g = {dx, 1, 4, 0, &b, r, NULL};
+    solid_geometry g = {.spacing = dx, .n_blocks = 1, .n_regions = 4, .blocks = &b, .regions = r};
     solid_particles p;
     char msg[256];
     CHECK(solid_geometry_build(&g, 1000.0, &p, NULL, msg, sizeof msg) == 0, "build: %s", msg);
@@ -428,6 +428,30 @@ static void test_check(void)
     CHECK(contains(messages, "empty.ini:19: [solid.probe far] point: is 0.505"),
           "probe off the solid not reported:\n%s", messages);
 
+    /* Cracks (2D only): one that separates points, one along a lattice row, one
+     * outside the body, one of no length. */
+    if (FSI_DIM == 2) {
+        const char *cracks = write_case(
+            "cracks.ini",
+            "[run]\nend_time = 1\n"                                           /* 1-2 */
+            "[solid]\nsolver = testsolid\nspacing = 0.01\ndensity = 2400\n"   /* 3-6 */
+            "[solid.block beam]\nmin = 0, 0\nmax = 1, 0.2\n"                   /* 7-9 */
+            "[solid.crack notch]\nfrom = 0, 0.1\nto = 0.032, 0.1\n"           /* 10-12 */
+            "[solid.crack on_row]\nfrom = 0.2, 0.105\nto = 0.3, 0.105\n"      /* 13-15 */
+            "[solid.crack outside]\nfrom = 2, 0.1\nto = 3, 0.1\n"             /* 16-18 */
+            "[solid.crack point]\nfrom = 0.5, 0.1\nto = 0.5, 0.1\n");         /* 19-21 */
+        n = load_case(cracks, messages, sizeof messages, NULL);
+        CHECK(n == 3, "cracks: %d errors, want 3:\n%s", n, messages);
+        CHECK(!contains(messages, "[solid.crack notch]"), "a good crack refused:\n%s", messages);
+        CHECK(contains(messages, "cracks.ini:13: [solid.crack on_row]: separates no two "
+                                 "neighbouring particles"),
+              "crack along a row not reported:\n%s", messages);
+        CHECK(contains(messages, "cracks.ini:16: [solid.crack outside]: separates no two "),
+              "crack outside the body not reported:\n%s", messages);
+        CHECK(contains(messages, "cracks.ini:21: [solid.crack point] to: equals 'from'"),
+              "crack of no length not reported:\n%s", messages);
+    }
+
     /* Too fine a lattice is refused before anything walks it. */
     const char *huge = write_case(
         "huge.ini",
@@ -605,7 +629,7 @@ static void test_mirror_clamp(void)
     CHECK(r.clamp_face == 1, "x_max parses to %d", r.clamp_face);
     CHECK(solid_clamp_face_parse("none") == -1 && solid_clamp_face_parse("w_max") == -2,
           "clamp_face words");
-    solid_geometry g = {dx, 2, 1, 0, blocks, &r, NULL};
+    solid_geometry g = {.spacing = dx, .n_blocks = 2, .n_regions = 1, .blocks = blocks, .regions = &r};
     solid_particles p;
     char msg[256];
     int unpaired = -1;
