@@ -2,7 +2,7 @@
 # C5 dam break against a soil-like baffle that fails (docs/benchmarks.md C5,
 # docs/validation.md C5): cases/c5_soil_baffle.ini with bond failure and the same run
 # with --set solid.failure=false, side by side (one thread each), then the crack
-# initiation time and place and the damage snapshots (bench/c5_soil_baffle.py).
+# initiation time and place and the damage snapshots (bench/fracture_scene.py).
 #
 #   bench/c5_soil_baffle.sh [OUT] [--report] [--set k=v ...]
 #
@@ -17,7 +17,7 @@ sweep_run "$OUT/failure" "$ROOT/cases/c5_soil_baffle.ini" &
 sweep_run "$OUT/no_failure" "$ROOT/cases/c5_soil_baffle.ini" --set solid.failure=false &
 wait
 
-"$PY" "$ROOT/bench/c5_soil_baffle.py" --png "$OUT/c5_soil_baffle.png" --md "$OUT/c5_soil_baffle.md" \
+"$PY" "$ROOT/bench/fracture_scene.py" --png "$OUT/c5_soil_baffle.png" --md "$OUT/c5_soil_baffle.md" \
   "$OUT/failure" "$OUT/no_failure"
 cat "$OUT/c5_soil_baffle.md"
 log "report: $OUT/c5_soil_baffle.md, plot: $OUT/c5_soil_baffle.png"
