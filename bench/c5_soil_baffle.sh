@@ -13,9 +13,7 @@ THREADS=1
 . "$(dirname "${BASH_SOURCE[0]}")/sweep.bash"
 sweep_parse c5_soil_baffle --n "" "$@"
 
-sweep_run "$OUT/failure" "$ROOT/cases/c5_soil_baffle.ini" &
-sweep_run "$OUT/no_failure" "$ROOT/cases/c5_soil_baffle.ini" --set solid.failure=false &
-wait
+sweep_run_failure_pair "$ROOT/cases/c5_soil_baffle.ini"
 
 "$PY" "$ROOT/bench/fracture_scene.py" --png "$OUT/c5_soil_baffle.png" --md "$OUT/c5_soil_baffle.md" \
   "$OUT/failure" "$OUT/no_failure"

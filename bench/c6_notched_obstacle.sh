@@ -14,9 +14,7 @@ THREADS=1
 . "$(dirname "${BASH_SOURCE[0]}")/sweep.bash"
 sweep_parse c6_notched_obstacle --n "" "$@"
 
-sweep_run "$OUT/failure" "$ROOT/cases/c6_notched_obstacle.ini" &
-sweep_run "$OUT/no_failure" "$ROOT/cases/c6_notched_obstacle.ini" --set solid.failure=false &
-wait
+sweep_run_failure_pair "$ROOT/cases/c6_notched_obstacle.ini"
 
 # Initiation: damage grown by 0.25 (the crack runs between rows: bench/fracture_scene.py).
 "$PY" "$ROOT/bench/fracture_scene.py" --png "$OUT/c6_notched_obstacle.png" \

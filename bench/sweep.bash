@@ -5,6 +5,8 @@
 #       [OUT] [LIST_OPTION "a b c"] [--resume | --report] [--threads T] [--set k=v ...]
 #     sets OUT (default out/bench/NAME), LIST, RESUME (0 run, 1 keep finished runs,
 #     2 run nothing), THREADS (default 2), EXTRA (the --set options) and log().
+#   sweep_run_failure_pair CASE
+#     runs CASE as OUT/failure and with solid.failure=false as OUT/no_failure, together.
 #   sweep_run DIR fsi-run-arguments...
 #     runs DIR (log DIR.txt) unless RESUME keeps it; a failed run is logged, not fatal:
 #     what it wrote is still compared.
@@ -51,4 +53,12 @@ sweep_run() {
   end=$(date +%s.%N)
   echo "wall_time_s $("$PY" -c "print(round($end - $start, 1))")" >> "$dir.txt"
   [ $rc = 0 ] || log "$name: run failed (exit $rc), see $dir.txt; what it wrote is still compared"
+}
+
+# A fracture scene's two runs side by side: OUT/failure (the case) and OUT/no_failure
+# (--set solid.failure=false), one thread each.
+sweep_run_failure_pair() {
+  sweep_run "$OUT/failure" "$1" &
+  sweep_run "$OUT/no_failure" "$1" --set solid.failure=false &
+  wait
 }
