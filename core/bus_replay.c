@@ -123,7 +123,7 @@ static void make_room(void **array, int count, int *capacity, size_t size)
     int grown = *capacity ? 2 * *capacity : 16;
     void *a = realloc(*array, (size_t)grown * size);
     if (!a) {
-        fsi_error("replay: out of memory reading %s", "the traffic log");
+        fsi_error("replay: out of memory (%d messages held)", count);
         exit(FSI_EXIT_RUN_FAILURE);
     }
     *array = a;
@@ -171,8 +171,7 @@ static void keep_early(fsi_replay *r, fsi_msg_type type, const void *msg)
     int len = fsi_message_encoded_size(type, msg);
     recorded m = {type, len > 0 ? malloc((size_t)len) : NULL, len, h->window, h->iteration};
     make_room((void **)&r->early, r->n_early, &r->early_capacity, sizeof *r->early);
-    if (!m.bytes ||
-        fsi_message_encode(type, msg, m.bytes, len) != len) {
+    if (!m.bytes || fsi_message_encode(type, msg, m.bytes, len) != len) {
         fsi_error("replay: out of memory keeping %s of window %d", fsi_msg_name(type),
                   h->window);
         exit(FSI_EXIT_RUN_FAILURE);
