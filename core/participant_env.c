@@ -37,13 +37,15 @@ int fsi_run_env_read(fsi_run_env *env, const char *name, const char *case_path)
         fsi_error("FSI_RUN_ID is not set to a whole number (it is '%s')", id ? id : "");
         return -1;
     }
-    env->heartbeat_interval = 0.25;
-    env->watchdog_timeout = 3.0;
+    env->heartbeat_interval = FSI_DEFAULT_HEARTBEAT_INTERVAL;
+    env->watchdog_timeout = FSI_DEFAULT_WATCHDOG_TIMEOUT;
     return 0;
 }
 
 void fsi_run_env_read_timing(fsi_run_env *env, const fsi_case *c)
 {
-    env->heartbeat_interval = fsi_case_get_real(c, "run", "heartbeat_interval", 0.25);
-    env->watchdog_timeout = fsi_case_get_real(c, "run", "watchdog_timeout", 3.0);
+    env->heartbeat_interval =
+        fsi_case_get_real(c, "run", "heartbeat_interval", FSI_DEFAULT_HEARTBEAT_INTERVAL);
+    env->watchdog_timeout =
+        fsi_case_get_real(c, "run", "watchdog_timeout", FSI_DEFAULT_WATCHDOG_TIMEOUT);
 }

@@ -49,6 +49,13 @@ enum {
  * (bench/window_roundtrip.sh). The kernel caps it at net.core.rmem_max. */
 #define FSI_DEFAULT_LCM_URL "udpm://239.255.76.67:7667?ttl=0&recv_buf_size=4194304"
 
+/* Default liveness timing ([run] heartbeat_interval, watchdog_timeout, seconds of wall
+ * time). 10 s, not less: on a machine running more processes than it has cores,
+ * coupled runs at 3 s were stopped as hung twice (a fluid of 57 000 particles unheard
+ * for 3.6 s, with the load average at 7 on 2 cores) while every process was alive. */
+#define FSI_DEFAULT_HEARTBEAT_INTERVAL 0.25
+#define FSI_DEFAULT_WATCHDOG_TIMEOUT 10.0
+
 const char *fsi_msg_channel(fsi_msg_type type);
 const char *fsi_msg_name(fsi_msg_type type);
 /* The kind of message a channel carries, or -1 for a channel that is not ours. */

@@ -3,6 +3,8 @@
 
 #include <string.h>
 
+#include "protocol.h"
+
 static const fsi_key_spec run_keys[] = {
     {"title", FSI_KEY_STRING, "-", "untitled", 0, 0, 0, NULL,
      "Name of the scene, printed in the run log."},
@@ -21,7 +23,9 @@ static const fsi_key_spec run_keys[] = {
      "Simulated time between rows of probes.csv; 0 writes a row after every window."},
     {"heartbeat_interval", FSI_KEY_REAL, "s", "0.25", FSI_BOUND_MIN_OPEN | FSI_BOUND_MAX, 0,
      2.0, NULL, "Wall time between liveness messages of every process."},
-    {"watchdog_timeout", FSI_KEY_REAL, "s", "3", FSI_BOUND_MIN_OPEN | FSI_BOUND_MAX, 0, 60.0,
+    /* The defaults are FSI_DEFAULT_HEARTBEAT_INTERVAL and FSI_DEFAULT_WATCHDOG_TIMEOUT
+     * (protocol.h), written out because the table holds text. */
+    {"watchdog_timeout", FSI_KEY_REAL, "s", "10", FSI_BOUND_MIN_OPEN | FSI_BOUND_MAX, 0, 60.0,
      NULL,
      "A process not heard from for this long (wall time) is taken as dead or hung and the "
      "run stops, naming it. At least twice heartbeat_interval."},
@@ -42,8 +46,10 @@ const fsi_key_table fsi_run_key_table = {
 int fsi_run_keys_check(const fsi_case *c, FILE *errors)
 {
     int n = 0;
-    double heartbeat = fsi_case_get_real(c, "run", "heartbeat_interval", 0.25);
-    double watchdog = fsi_case_get_real(c, "run", "watchdog_timeout", 3.0);
+    double heartbeat =
+        fsi_case_get_real(c, "run", "heartbeat_interval", FSI_DEFAULT_HEARTBEAT_INTERVAL);
+    double watchdog =
+        fsi_case_get_real(c, "run", "watchdog_timeout", FSI_DEFAULT_WATCHDOG_TIMEOUT);
     /* Two missed heartbeats must not yet count as death: a loaded machine delays one. */
     if (watchdog < 2.0 * heartbeat) {
         const char *at = fsi_case_origin(c, "run", "watchdog_timeout");

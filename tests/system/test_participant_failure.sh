@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # A participant killed (SIGKILL) or hung (SIGSTOP) stops the whole run within 10 s,
 # with a message naming it and a non-zero exit, and the output written so far stays
-# readable by h5dump.
+# readable by h5dump. The watchdog is set to 3 s (default 10 s) so that a hang is
+# found well inside the limit.
 source "$(dirname "$0")/lib.sh"
 small_case case.ini 60
 
@@ -10,7 +11,7 @@ program_of() { case "$1" in solid) echo fsi-spring-solid ;; fluid) echo fsi-dash
 for who in solid fluid; do
   for sig in KILL STOP; do
     out="run_${who}_$sig"
-    "$FSI_RUN" case.ini --out "$out" >"$out.txt" 2>&1 &
+    "$FSI_RUN" case.ini --out "$out" --set run.watchdog_timeout=3 >"$out.txt" 2>&1 &
     launcher=$!
     # Wait until the run is under way: a few probe rows and the first frame exist.
     for _ in $(seq 100); do
