@@ -4,15 +4,16 @@
 # deflection against plate theory (68.6 micrometres, 003 Eq. 53) and against the same
 # with the shear deflection of a Timoshenko beam.
 #
-#   bench/c4_plate_under_water.sh [OUT] [--n "8 10 12"] [--resume | --report] [--threads T] [--set k=v ...]
+#   bench/c4_plate_under_water.sh [OUT] [--n "4 8 12"] [--resume | --report] [--threads T] [--set k=v ...]
 #
 # Each run's output is OUT/nN (log OUT/nN.txt); writes OUT/c4_plate_under_water.md (dx,
 # particles, windows and the solid's sub-steps per window, settled deflection and its
 # errors, wall time) and OUT/c4_plate_under_water.png (bench/c4_plate_under_water.py).
-# Default on 2 threads, on a quiet machine: T / dx = 8 about 14 min, 12 about 45 min.
+# Default on 2 threads, on a quiet machine: T / dx = 4 about 3 min, 8 about 14 min, 12
+# about 45 min.
 set -euo pipefail
 . "$(dirname "${BASH_SOURCE[0]}")/sweep.bash"
-sweep_parse c4_plate_under_water --n "8 10 12" "$@"
+sweep_parse c4_plate_under_water --n "4 8 12" "$@"
 T=0.05      # plate thickness (m)
 
 DIRS=()

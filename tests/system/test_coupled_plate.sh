@@ -12,11 +12,12 @@
 #     is symmetric and the loads are exact pair reactions) to 1e-6 of the water's
 #     weight; its vertical part is printed (at this resolution it still swings by
 #     about +-10 % around the weight at 0.1 s, with the column's oscillation);
-#   - the mean mid-span deflection over 0.05-0.1 s is within 10 % of plate theory,
-#     68.6 um (003 Eq. 53): measured +3.5 %; the plate still swings by +-10 um around
-#     its static state with a period of about 0.045 s at 0.1 s, so a mean over 0.05 s
-#     is only good to a few per cent, and T / dx = 4 is the coarsest lattice that
-#     has a family through the thickness.
+#   - the mean mid-span deflection over 0.05-0.1 s is within 10 % of the elastic
+#     answer, plate theory (003 Eq. 53, 68.6 um) with a Timoshenko beam's shear
+#     deflection (71.1 um, docs/validation.md C4): measured +5.8 %. The tolerance is
+#     T / dx = 4's own discretisation error (its settled deflection, run to 0.2 s, is
+#     +5.1 %, bench/c4_plate_under_water.sh) plus the column's swing that a mean over
+#     0.05 s does not average out (+-10 um, a few per cent, at 0.1 s).
 source "$(dirname "$0")/lib.sh"
 PY=/usr/bin/python3
 
@@ -47,11 +48,14 @@ print("total load on the plate at t = %.3g s: (%.2f, %.2f) N/m; weight of the wa
 ok &= abs(load[0]) < 1e-6 * weight
 rows = list(csv.DictReader(open(out + "/probes.csv")))
 late = [-float(r["mid_uy"]) for r in rows if float(r["time"]) >= 0.05]
-delta = 12 * 9.81 * (1 - 0.34 ** 2) * (1000 * 2.0 + 2700 * 0.05) / (384 * 67.5e9 * 0.05 ** 3)
+q = 9.81 * (1000 * 2.0 + 2700 * 0.05)
+bending = 12 * q * (1 - 0.34 ** 2) / (384 * 67.5e9 * 0.05 ** 3)
+shear = q / (8 * 5.0 / 6.0 * 67.5e9 / (2 * 1.34) * 0.05)
+delta = bending + shear
 mean = sum(late) / len(late)
-print("mean mid-span deflection over 0.05-0.1 s: %.2f um; plate theory %.2f um: %+.2f %%"
-      % (1e6 * mean, 1e6 * delta, 100 * (mean / delta - 1)))
+print("mean mid-span deflection over 0.05-0.1 s: %.2f um; plate theory %.2f um, with shear "
+      "%.2f um: %+.2f %%" % (1e6 * mean, 1e6 * bending, 1e6 * delta, 100 * (mean / delta - 1)))
 ok &= abs(mean / delta - 1) < 0.10
 sys.exit(0 if ok else 1)
 PY
-pass "C4 at T / dx = 4: stable, sub-cycled, load = weight, deflection near plate theory"
+pass "C4 at T / dx = 4: stable, sub-cycled, load = weight, deflection near the elastic answer"
