@@ -13,8 +13,9 @@ solid (fluid.log's "interface" line). There is no reference data for this scene 
 Fig. 19 is not digitised), so nothing is compared. One line per run on stdout; --md
 writes the same as a markdown table, --png the displacement history of every run,
 --snapshots the fluid pressure and the gate's displacement of the finest run at four
-times: when the gate starts to move, its largest opening, and two later times (half-way
-to the end and the end), or --times.
+times (the nearest output frames): when the gate starts to move, the largest opening
+within 0.1 s of that (the impact), the largest opening of the run and the end, or
+--times.
 """
 import argparse
 import os
@@ -72,13 +73,15 @@ def markdown(results):
 
 
 def snapshot_times(r, times):
-    """The four snapshot times: given, or moving / largest opening / half-way / end."""
+    """The four snapshot times: given, or the gate starting to move, the largest ux within
+    0.1 s of that (the impact), the largest ux of the run and the end."""
     if times:
         return times
-    t_end = float(r["t"][-1])
+    t, ux = r["t"], r["ux"]
     t0 = r["t_move"] if np.isfinite(r["t_move"]) else 0.0
-    t_max = r["ux_max"][1]
-    return [t0, t_max, 0.5 * (t_max + t_end), t_end]
+    early = (t >= t0) & (t <= t0 + 0.1)
+    t_impact = float(t[early][int(np.argmax(ux[early]))]) if early.any() else t0
+    return [t0, t_impact, r["ux_max"][1], float(t[-1])]
 
 
 def snapshots(r, png, times):
@@ -89,7 +92,8 @@ def snapshots(r, png, times):
     run, dx = r["run"], r["dx"]
     case = fsi_results.read_case(run)
     gate_x = float(case["solid.block gate"]["min"].split(",")[0])
-    views = ((-0.01, 1.41, -0.01, 0.35, 7.0), (gate_x - 0.1, gate_x + 0.12, -0.01, 0.2, 2.2))
+    reach = max(0.12, r["ux_max"][0] + 0.06)      # the zoom holds the open gate
+    views = ((-0.01, 1.41, -0.01, 0.35, 7.0), (gate_x - 0.1, gate_x + reach, -0.01, 0.2, 2.2))
     fig, axes = plt.subplots(4, 2, figsize=(10.5, 8.2), layout="constrained",
                              gridspec_kw={"width_ratios": [7.0, 2.2]})
     with h5py.File(os.path.join(run, "fluid.h5"), "r") as ff, \

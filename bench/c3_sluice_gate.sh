@@ -16,8 +16,8 @@
 # (point A against time) and OUT/c3_snapshots.png (bench/c3_sluice_gate.py).
 # --resume keeps the runs of OUT that finished; --report runs nothing and reports the
 # runs in OUT (finished or not). --set is passed to every run.
-# Default N = 3 (the case's) on 1 thread: about an hour on one core of the shared
-# machine (docs/validation.md C3).
+# Default N = 3 (the case's) on 1 thread: 76 minutes on the loaded shared machine,
+# roughly 40 on a quiet one (docs/validation.md C3); N = 4 takes about 2.4 times that.
 set -euo pipefail
 
 THREADS=1
