@@ -52,29 +52,9 @@ def nrmse(t_sim, u_sim, t_exp, u_exp):
     return float(np.sqrt(np.mean(err ** 2)) / (u_exp.max() - u_exp.min())), int(ok.sum())
 
 
-def particle_counts(run_dir):
-    """(fluid particles, gate points, clamp points) of a run."""
-    import h5py
-    with h5py.File(os.path.join(run_dir, "fluid.h5"), "r") as f:
-        n_fluid = int(((f["static/flags"][()].ravel() & 1) > 0).sum())
-    with h5py.File(os.path.join(run_dir, "solid.h5"), "r") as f:
-        clamped = (f["static/flags"][()].ravel() & 1) > 0
-    return n_fluid, int((~clamped).sum()), int(clamped.sum())
-
-
-def frame_at(h5, t):
-    """The frame group of an open participant file whose time is nearest t."""
-    frames = h5["frames"]
-    keys = sorted(frames.keys())
-    times = np.array([frames[k].attrs["time"] for k in keys])
-    return frames[keys[int(np.argmin(np.abs(times - t)))]]
-
-
 def snapshot_times(run_dir):
     """SNAP_TIMES if the run's solid frames reach them, else its last four frames' times."""
-    import h5py
-    with h5py.File(os.path.join(run_dir, "solid.h5"), "r") as f:
-        times = sorted(float(g.attrs["time"]) for g in f["frames"].values())
+    times = fsi_results.frame_times(os.path.join(run_dir, "solid.h5"))
     return SNAP_TIMES if times[-1] >= SNAP_TIMES[-1] - 1e-9 else times[-4:]
 
 
@@ -89,16 +69,9 @@ def snapshots(run_dir, png, dx):
         clamped = (sf["static/flags"][()].ravel() & 1) > 0
         last = None
         for ax, t in zip(axes.ravel(), snapshot_times(run_dir)):
-            fr, sr = frame_at(ff, t), frame_at(sf, t)
-            x, p = fr["position"][()], fr["pressure"][()].ravel()
-            fluid = (fr["flags"][()].ravel() & 1) > 0
+            fr, sr = fsi_results.frame_at(ff, t), fsi_results.frame_at(sf, t)
             size = (dx * 72.0 * 3.0 / 0.27) ** 2    # points^2: dx on axes 3 in wide for 0.27 m
-            ax.scatter(x[~fluid, 0], x[~fluid, 1], s=size, c="0.75", marker="s", lw=0)
-            last = ax.scatter(x[fluid, 0], x[fluid, 1], s=size, c=p[fluid], cmap="viridis",
-                              vmin=0.0, vmax=1400.0, lw=0)
-            xs = sr["position"][()]
-            ax.scatter(xs[~clamped, 0], xs[~clamped, 1], s=size, c="tab:red", lw=0)
-            ax.scatter(xs[clamped, 0], xs[clamped, 1], s=size, c="k", lw=0)
+            last, _ = fsi_results.draw_coupled_frame(ax, fr, sr, clamped, size, 1400.0)
             ax.set_title(f"t = {sr.attrs['time']:.2f} s", fontsize=9)
             ax.set_aspect("equal")
             ax.set_xlim(-0.01, 0.26)
@@ -130,7 +103,7 @@ def main():
         t = np.array(pr["time"])
         u = {"x": np.array(pr["tip_ux"]), "y": np.array(pr["tip_uy"])}
         err = {k: nrmse(t, u[k], *exp[k]) for k in u}
-        nf, ng, nc = particle_counts(run)
+        nf, ng, nc = fsi_results.particle_counts(run)
         peak = {k: (float(u[k].max()), float(t[int(np.argmax(u[k]))])) for k in u}
         ended = t[-1] >= float(case["run"]["end_time"]) - 1e-9
         results.append(dict(run=run, dx=dx, t=t, u=u, err=err, nf=nf, ng=ng, nc=nc, peak=peak,

@@ -46,3 +46,52 @@ def wall_time(out_dir):
     """Wall time of a finished run from its run.log [s], or None."""
     hit = log_match(os.path.join(out_dir, "run.log"), r"exit = ok \(([0-9.]+) s wall\)")
     return float(hit) if hit else None
+
+
+def particle_counts(run_dir):
+    """(fluid particles, free solid points, clamped solid points) of a coupled run."""
+    import h5py
+    with h5py.File(os.path.join(run_dir, "fluid.h5"), "r") as f:
+        n_fluid = int(((f["static/flags"][()].ravel() & 1) > 0).sum())
+    with h5py.File(os.path.join(run_dir, "solid.h5"), "r") as f:
+        clamped = (f["static/flags"][()].ravel() & 1) > 0
+    return n_fluid, int((~clamped).sum()), int(clamped.sum())
+
+
+def frame_times(h5_path):
+    """The sorted times of a participant file's frames."""
+    import h5py
+    with h5py.File(h5_path, "r") as f:
+        return sorted(float(g.attrs["time"]) for g in f["frames"].values())
+
+
+def frame_at(h5, t):
+    """The frame group of an open participant file whose time is nearest t."""
+    import numpy as np
+    frames = h5["frames"]
+    keys = sorted(frames.keys())
+    times = np.array([frames[k].attrs["time"] for k in keys])
+    return frames[keys[int(np.argmin(np.abs(times - t)))]]
+
+
+def draw_coupled_frame(ax, fluid_frame, solid_frame, clamped, size, p_max,
+                       solid_values=None, solid_cmap="magma", solid_range=None):
+    """Draw one frame of a coupled run on ax: walls grey, fluid coloured by pressure
+    (0 .. p_max), the solid's clamped points black and its free points red, or coloured
+    by solid_values (one per solid point) when given. size: marker area in points^2.
+    Returns (fluid scatter, free-solid scatter) for colour bars."""
+    x = fluid_frame["position"][()]
+    p = fluid_frame["pressure"][()].ravel()
+    fluid = (fluid_frame["flags"][()].ravel() & 1) > 0
+    ax.scatter(x[~fluid, 0], x[~fluid, 1], s=size, c="0.75", marker="s", lw=0)
+    fs = ax.scatter(x[fluid, 0], x[fluid, 1], s=size, c=p[fluid], cmap="viridis",
+                    vmin=0.0, vmax=p_max, lw=0)
+    xs = solid_frame["position"][()]
+    if solid_values is None:
+        ss = ax.scatter(xs[~clamped, 0], xs[~clamped, 1], s=size, c="tab:red", lw=0)
+    else:
+        lo, hi = solid_range if solid_range else (None, None)
+        ss = ax.scatter(xs[~clamped, 0], xs[~clamped, 1], s=size, c=solid_values[~clamped],
+                        cmap=solid_cmap, vmin=lo, vmax=hi, lw=0)
+    ax.scatter(xs[clamped, 0], xs[clamped, 1], s=size, c="k", lw=0)
+    return fs, ss
