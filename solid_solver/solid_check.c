@@ -255,8 +255,8 @@ static void check_cracks(fsi_case_checker *k, const solid_geometry *g)
                              "cracks are segments of 2D builds; this build is %dD", FSI_DIM);
             continue;
         }
-        if (distance_to_segment(crack->from, crack->to, crack->to) <
-            SOLID_GEOMETRY_TOL * g->spacing) {
+        const double length = distance_to_segment(crack->from, crack->to, crack->to);
+        if (length < SOLID_GEOMETRY_TOL * g->spacing) {
             fsi_case_problem(k, crack->section, "to", "equals 'from': the crack has no length");
             continue;
         }

@@ -629,7 +629,8 @@ static void test_mirror_clamp(void)
     CHECK(r.clamp_face == 1, "x_max parses to %d", r.clamp_face);
     CHECK(solid_clamp_face_parse("none") == -1 && solid_clamp_face_parse("w_max") == -2,
           "clamp_face words");
-    solid_geometry g = {.spacing = dx, .n_blocks = 2, .n_regions = 1, .blocks = blocks, .regions = &r};
+    solid_geometry g = {.spacing = dx, .n_blocks = 2, .n_regions = 1, .blocks = blocks,
+                        .regions = &r};
     solid_particles p;
     char msg[256];
     int unpaired = -1;
