@@ -67,23 +67,18 @@ for dx in $LIST; do
   "$ROOT/build/bin/fsi-run" "$OUT/case.ini" --out "$OUT/dx$dx" --force --threads 1 \
     --set "solid.spacing=$dx" --set "solid.region face.max=$face,0.09" > "$OUT/dx$dx.txt" 2>&1
   echo "dx = $dx m:"
-  /usr/bin/python3 - "$OUT/dx$dx/solid.h5" <<'PY'
+  /usr/bin/python3 - "$ROOT/bench" "$OUT/dx$dx/solid.h5" <<'PY'
 import sys
-import h5py
 import numpy as np
-with h5py.File(sys.argv[1], "r") as f:
-    x0 = f["static/x0"][()]
-    body = (f["static/flags"][()].reshape(-1) & 4) == 0   # not a mirrored clamp image
-    keys = sorted(f["frames"].keys())
-    d0 = f["frames"][keys[0]]["damage"][()].reshape(-1)
-    foot = body & (x0[:, 1] < 0.01)
-    notch = body & (np.abs(x0[:, 1] - 0.025) < 0.005)
-    for k in keys:
-        d = f["frames"][k]["damage"][()].reshape(-1) - d0
-        if d[body].max() > 0.02:
-            print("  t = %.3f s: damage growth foot %.2f, notch %.2f"
-                  % (f["frames"][k].attrs["time"], d[foot].max(), d[notch].max()))
-        if d[body].max() > 0.3:
-            break
+sys.path.insert(0, sys.argv[1])
+from fracture_scene import damage_growth
+x0, body, growth = damage_growth(sys.argv[2])
+foot = body & (x0[:, 1] < 0.01)
+notch = body & (np.abs(x0[:, 1] - 0.025) < 0.005)
+for t, g in growth:
+    if g.max() > 0.02:
+        print("  t = %.3f s: damage growth foot %.2f, notch %.2f" % (t, g[foot].max(), g[notch].max()))
+    if g.max() > 0.3:
+        break
 PY
 done

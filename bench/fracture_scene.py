@@ -13,49 +13,69 @@ crack runs between rows of points: a point next to a straight crack through its 
 family loses about 0.3 of it (tests/unit/test_nosbpd_failure.c), so C6 uses 0.25.
 Measuring growth leaves out bonds cut from the start ([solid.crack]). Mirrored clamp
 points (flag 4) are images of the body, not material: they are left out of the
-measure and drawn in grey.
+measure and drawn in grey. bench/c6_notch_or_foot.sh uses damage_growth too.
 """
 import argparse
+import os
+import sys
 
 import h5py
 import numpy as np
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import fsi_results  # noqa: E402
 
 MIRRORED = 4   # SOLID_MIRRORED, solid_solver/solid_particles.h
 
 
-def material(path):
-    """Mask of the solid's material points (not mirrored clamp images)."""
-    with h5py.File(path, "r") as f:
-        return (f["static/flags"][()].reshape(-1) & MIRRORED) == 0
+def material(h5):
+    """Mask of an open solid file's material points (not mirrored clamp images)."""
+    return (h5["static/flags"][()].reshape(-1) & MIRRORED) == 0
 
 
-def frames(path):
-    with h5py.File(path, "r") as f:
-        x0 = f["static/x0"][()]
-        out = []
-        for k in sorted(f["frames"].keys()):
-            g = f["frames"][k]
-            out.append((float(g.attrs["time"]), g["position"][()],
-                        g["damage"][()].reshape(-1) if "damage" in g else np.zeros(len(x0)),
-                        g["pressure"][()].reshape(-1) if "pressure" in g else None,
-                        g["flags"][()].reshape(-1) if "flags" in g else None))
-        return x0, out
+def damage_growth(solid_h5_path):
+    """Reference positions, material mask and, per frame, (time, damage growth since
+    the first frame; 0 on mirrored clamp points)."""
+    with h5py.File(solid_h5_path, "r") as f:
+        x0, body = f["static/x0"][()], material(f)
+        keys = sorted(f["frames"].keys())
+        d0 = f["frames"][keys[0]]["damage"][()].reshape(-1)
+        growth = [(float(f["frames"][k].attrs["time"]),
+                   np.where(body, f["frames"][k]["damage"][()].reshape(-1) - d0, 0.0))
+                  for k in keys]
+    return x0, body, growth
 
 
-def initiation(run, threshold):
-    x0, fr = frames(run + "/solid.h5")
-    initial, body = fr[0][2], material(run + "/solid.h5")
-    for t, x, dmg, _, _ in fr:
-        growth = np.where(body, dmg - initial, 0.0)
-        i = int(np.argmax(growth))
-        if growth[i] >= threshold:
-            return t, x0[i], fr
-    return None, None, fr
+def initiation(growth, x0, threshold):
+    """(time, reference position) of the first frame with a growth >= threshold, or
+    (None, None)."""
+    for t, g in growth:
+        i = int(np.argmax(g))
+        if g[i] >= threshold:
+            return t, x0[i]
+    return None, None
 
 
 def pair(text):
     return tuple(float(v) for v in text.split(","))
+
+
+def snapshot(ax, run, t, a):
+    """Water by pressure near the structure and the solid by damage, at the frames
+    nearest t; returns the two scatters for colour bars."""
+    with h5py.File(run + "/fluid.h5", "r") as ff, h5py.File(run + "/solid.h5", "r") as sf:
+        fl, s = fsi_results.frame_at(ff, t), fsi_results.frame_at(sf, t)
+        x, p = fl["position"][()], fl["pressure"][()].reshape(-1)
+        water = (fl["flags"][()].reshape(-1) & 1) != 0
+        near = water & (x[:, 0] > a.xlim[0]) & (x[:, 0] < a.xlim[1]) & (x[:, 1] < a.ylim[1])
+        sc = ax.scatter(x[near, 0], x[near, 1], c=p[near], s=3, cmap="Blues", vmin=0,
+                        vmax=a.pmax)
+        xs, dmg, body = s["position"][()], s["damage"][()].reshape(-1), material(sf)
+        ax.scatter(xs[~body, 0], xs[~body, 1], c="0.7", s=12)
+        d = ax.scatter(xs[body, 0], xs[body, 1], c=dmg[body], s=12, cmap="inferno_r", vmin=0,
+                       vmax=1)
+        ax.set_title("%s, t = %.2f s" % (a.label, s.attrs["time"]), fontsize=8)
+    return sc, d
 
 
 def main():
@@ -73,11 +93,11 @@ def main():
     a = ap.parse_args()
     rows = []
     for label, run in (("failure = true", a.with_failure), ("failure = false", a.without_failure)):
-        t0, where, fr = initiation(run, a.threshold)
-        body = material(run + "/solid.h5")
-        growth = (fr[-1][2] - fr[0][2])[body]
-        rows.append((label, t0, where, fr[-1][0], float(growth.max()),
-                     int((growth >= a.threshold).sum()), len(growth)))
+        x0, body, growth = damage_growth(run + "/solid.h5")
+        t0, where = initiation(growth, x0, a.threshold)
+        t_end, last = growth[-1]
+        rows.append((label, t0, where, t_end, float(last[body].max()),
+                     int((last[body] >= a.threshold).sum()), int(body.sum())))
     with open(a.md, "w") as md:
         md.write("| run | crack initiation (first frame with damage grown by >= %g) | where "
                  "(reference position) | end | largest damage growth at the end | material "
@@ -94,26 +114,13 @@ def main():
     fig, axes = plt.subplots(2, len(a.times), figsize=(3.0 * len(a.times), 5.6), squeeze=False,
                              constrained_layout=True)
     for row, run in enumerate((a.with_failure, a.without_failure)):
-        _, sfr = frames(run + "/solid.h5")
-        _, ffr = frames(run + "/fluid.h5")
+        a.label = "failure" if row == 0 else "no failure"
         for col, t in enumerate(a.times):
             ax = axes[row][col]
-            s = min(sfr, key=lambda f: abs(f[0] - t))
-            fl = min(ffr, key=lambda f: abs(f[0] - t))
-            water = (fl[4] & 1) != 0
-            near = (water & (fl[1][:, 0] > a.xlim[0]) & (fl[1][:, 0] < a.xlim[1]) &
-                    (fl[1][:, 1] < a.ylim[1]))
-            sc = ax.scatter(fl[1][near, 0], fl[1][near, 1], c=fl[3][near], s=3, cmap="Blues",
-                            vmin=0, vmax=a.pmax)
-            body = material(run + "/solid.h5")
-            ax.scatter(s[1][~body, 0], s[1][~body, 1], c="0.7", s=12)
-            d = ax.scatter(s[1][body, 0], s[1][body, 1], c=s[2][body], s=12, cmap="inferno_r",
-                           vmin=0, vmax=1)
+            sc, d = snapshot(ax, run, t, a)
             ax.set_xlim(*a.xlim)
             ax.set_ylim(*a.ylim)
             ax.set_aspect("equal")
-            ax.set_title("%s, t = %.2f s" % ("failure" if row == 0 else "no failure", s[0]),
-                         fontsize=8)
             ax.tick_params(labelsize=6)
     fig.colorbar(d, ax=axes, shrink=0.6, label="damage (solid)")
     fig.colorbar(sc, ax=axes, shrink=0.6, label="water pressure [Pa]")

@@ -12,12 +12,13 @@
 #     is symmetric and the loads are exact pair reactions) to 1e-6 of the water's
 #     weight; its vertical part is printed (at this resolution it still swings by
 #     about +-10 % around the weight at 0.1 s, with the column's oscillation);
-#   - the mean mid-span deflection over 0.05-0.1 s is within 10 % of the elastic
+#   - the mean mid-span deflection over 0.05-0.1 s is within 8 % of the elastic
 #     answer, plate theory (003 Eq. 53, 68.6 um) with a Timoshenko beam's shear
 #     deflection (71.1 um, docs/validation.md C4): measured +5.8 %. The tolerance is
 #     T / dx = 4's own discretisation error (its settled deflection, run to 0.2 s, is
-#     +5.1 %, bench/c4_plate_under_water.sh) plus the column's swing that a mean over
-#     0.05 s does not average out (+-10 um, a few per cent, at 0.1 s).
+#     +5.1 %, bench/c4_plate_under_water.sh) plus what a mean over 0.05 s, about one
+#     period (0.045 s) of the column's +-10 um swing, leaves of that swing: under
+#     +-1.5 um, 2 %.
 source "$(dirname "$0")/lib.sh"
 PY=/usr/bin/python3
 
@@ -55,7 +56,7 @@ delta = bending + shear
 mean = sum(late) / len(late)
 print("mean mid-span deflection over 0.05-0.1 s: %.2f um; plate theory %.2f um, with shear "
       "%.2f um: %+.2f %%" % (1e6 * mean, 1e6 * bending, 1e6 * delta, 100 * (mean / delta - 1)))
-ok &= abs(mean / delta - 1) < 0.10
+ok &= abs(mean / delta - 1) < 0.08
 sys.exit(0 if ok else 1)
 PY
 pass "C4 at T / dx = 4: stable, sub-cycled, load = weight, deflection near the elastic answer"
