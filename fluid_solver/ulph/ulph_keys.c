@@ -30,6 +30,11 @@ static const fsi_key_spec keys[] = {
      "the lists hold the particles within delta (1 + skin) and are rebuilt when a particle "
      "has moved half the skin (docs/ulph.md, Cost); 0 rebuilds them at every evaluation. "
      "The neighbours within the support, and so the results, do not depend on it."},
+    {"wall_contact", FSI_KEY_REAL, "-", "0.01", FSI_BOUND_MIN | FSI_BOUND_MAX, 0, 1, NULL,
+     "Coefficient k of the soft contact that pushes a fluid particle away from a wall or "
+     "solid particle closer than one spacing, k c0^2 (1 - r / dx) f(r / 0.75 h) / r "
+     "(004 Eqs. 21-24, k = 0.01 there; docs/ulph.md): it keeps thin, fast layers without "
+     "pressure out of walls and solids. Zero at one spacing and beyond; 0 turns it off."},
     {"tension", FSI_KEY_BOOL, "-", "false", 0, 0, 0, NULL,
      "false: the water does not sustain tension, a fluid particle's density is kept at or "
      "above rho0 (p >= 0, gauge against the atmosphere above a free surface; docs/ulph.md); "

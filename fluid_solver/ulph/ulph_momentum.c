@@ -1,10 +1,12 @@
 /* Continuity and momentum of ULPH (ulph_momentum.h). */
 #include "ulph_momentum.h"
 
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "small_tensor.h"
+#include "ulph_contact.h"
 
 int ulph_momentum_reserve(ulph_momentum_scratch *s, int n)
 {
@@ -54,7 +56,18 @@ typedef struct {
     const double *vv;           /* velocity_for_viscosity */
     const double *A;            /* sigma M^-1 per particle */
     double av, eps2, mu_laplacian;
+    double contact_k_c2, spacing, contact_inv_eta_scale; /* ulph_contact.h */
 } pair_context;
+
+/* The edge of the cube (square) of a particle's volume: its spacing on a lattice. */
+static inline double particle_side(double volume)
+{
+#if FSI_DIM == 2
+    return sqrt(volume);
+#else
+    return cbrt(volume);
+#endif
+}
 
 /* The force density on fluid particle I from neighbour J (entry k of I's row); the
  * force on I is V_I times it. trace_i = tr M_I, taken once per row by the caller. */
@@ -83,10 +96,23 @@ static inline void pair_force(const pair_context *c, int i, int64_t k, double tr
     const double pi_ij = c->av * approach / (r2 + c->eps2);
     /* A wall pushes, never pulls: with p_I < 0 the pair's -p_I M_I^-1 term would draw I
      * into the wall, so p_I counts as 0 against a wall. */
-    const double tension = p->pressure[i] < 0.0 && !(p->flags[j] & FLUID_PARTICLE_FLUID)
-                               ? p->pressure[i] : 0.0;
+    const int against_wall = !(p->flags[j] & FLUID_PARTICLE_FLUID);
+    const double tension = against_wall && p->pressure[i] < 0.0 ? p->pressure[i] : 0.0;
     for (int d = 0; d < FSI_DIM; d++)
         out[d] = wv * f[d] + (pi_ij + tension) * ops->g[k * FSI_DIM + d];
+    if (against_wall && c->contact_k_c2 > 0.0) {
+        /* The pair's distance at rest, the mean of the two spacings: a solid may be
+         * sampled finer or coarser than the fluid (its spacing from its volume). */
+        const double range = 0.5 * (c->spacing + particle_side(p->volume[j]));
+        if (r2 < range * range) {
+            /* 004 Eq. 21 as a force density on I: rho_I a_IJ, along x_I - x_J = -xij. */
+            const double push = p->density[i] *
+                                ulph_contact_factor(sqrt(r2), range, c->contact_k_c2,
+                                                    c->contact_inv_eta_scale);
+            for (int d = 0; d < FSI_DIM; d++)
+                out[d] -= push * xij[d];
+        }
+    }
     if (c->mu_laplacian > 0.0) {
         const double trace_j = fsi_mat_trace(&ops->shape[(size_t)j * FSI_MAT_SIZE]);
         const double lap = c->mu_laplacian * 4.0 * FSI_DIM * wv / (trace_i + trace_j);
@@ -101,7 +127,9 @@ static pair_context make_context(const ulph_operators *ops, const ulph_momentum_
     return (pair_context){ops, p, vv, A,
                           prm->artificial_viscosity * prm->h * prm->c0 * prm->rho0,
                           0.01 * prm->h * prm->h,
-                          prm->viscous_laplacian ? prm->viscosity : 0.0};
+                          prm->viscous_laplacian ? prm->viscosity : 0.0,
+                          prm->contact * prm->c0 * prm->c0, prm->spacing,
+                          1.0 / (0.75 * prm->h)};
 }
 
 void ulph_momentum_rates(const ulph_operators *ops, const ulph_momentum_params *prm,

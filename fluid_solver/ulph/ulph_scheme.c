@@ -117,6 +117,8 @@ fluid_scheme *fluid_scheme_create(const fsi_case *c, const char *role,
     s->momentum.viscous_laplacian = !viscous || strcmp(viscous, "laplacian") == 0;
     s->momentum.c0 = props->sound_speed;
     s->momentum.rho0 = props->density;
+    s->momentum.contact = fsi_case_get_real(c, role, "wall_contact", 0.01);
+    s->momentum.spacing = p->spacing;
     memcpy(s->momentum.gravity, props->gravity, sizeof s->momentum.gravity);
     s->free_slip = props->free_slip;
     s->cfl_acoustic = fsi_case_get_real(c, role, "cfl_acoustic", 0.25);

@@ -24,6 +24,7 @@
 #include "small_tensor.h"
 #include "ulph_eos.h"
 #include "ulph_kernel.h"
+#include "ulph_contact.h"
 #include "ulph_momentum.h"
 #include "ulph_operators.h"
 #include "ulph_walls.h"
@@ -131,7 +132,7 @@ static void test_hydrostatic(void)
     CHECK(worst_wall < 1e-9 * rho0 * g * H, "wall pressure not the continued linear field: %g Pa",
           worst_wall);
 
-    ulph_momentum_params prm = {0.0, 0.0, s.k.h, 31.3, rho0, {0.0, -g}, 0};
+    ulph_momentum_params prm = {0.0, 0.0, s.k.h, 31.3, rho0, {0.0, -g}, 0, 0.0, 0.0};
     ulph_momentum_rates(&s.ops, &prm, p, s.vv, &s.scratch, s.drho, s.acc);
     double worst = 0.0, worst_near_wall = 0.0, worst_inside = 0.0;
     for (int i = 0; i < p->n; i++) {
@@ -273,7 +274,7 @@ static void test_momentum_conservation(void)
     scene_update(&s);
     /* Both viscous operators: the stress inside Eq. 23 and the pairwise Laplacian. */
     for (int laplacian = 0; laplacian < 2; laplacian++) {
-        ulph_momentum_params prm = {0.1, 0.0, s.k.h, 30.0, 1000.0, {0}, laplacian};
+        ulph_momentum_params prm = {0.1, 0.0, s.k.h, 30.0, 1000.0, {0}, laplacian, 0.0, 0.0};
         ulph_momentum_rates(&s.ops, &prm, p, s.vv, &s.scratch, s.drho, s.acc);
         double total[FSI_DIM] = {0}, scale = 0.0;
         for (int i = 0; i < p->n; i++)
@@ -292,7 +293,8 @@ static void test_momentum_conservation(void)
 /* The loads on moving boundary particles are the exact reaction of the fluid's pair
  * forces: with the bottom quarter of a jittered block made boundary particles (random
  * velocities, pressures of both signs, both viscous operators, no artificial viscosity,
- * whose fluid-fluid pairs are not antisymmetric), sum_fluid m (a - g) + sum_B F_B = 0
+ * whose fluid-fluid pairs are not antisymmetric, and the wall contact, which the jitter
+ * of 0.3 dx brings into range), sum_fluid m (a - g) + sum_B F_B = 0
  * to round-off (1e-12 of the sum of magnitudes). */
 static void test_boundary_loads(void)
 {
@@ -310,7 +312,8 @@ static void test_boundary_loads(void)
     scene_update(&s);
     double *loads = calloc((size_t)p->n * FSI_DIM, sizeof *loads);
     for (int laplacian = 0; laplacian < 2; laplacian++) {
-        ulph_momentum_params prm = {0.1, 0.0, s.k.h, 30.0, 1000.0, {0.0, -9.81}, laplacian};
+        ulph_momentum_params prm = {0.1, 0.0, s.k.h, 30.0, 1000.0, {0.0, -9.81}, laplacian,
+                                    0.01, 1.0 / 16};
         ulph_momentum_rates(&s.ops, &prm, p, s.vv, &s.scratch, s.drho, s.acc);
         ulph_boundary_loads(&s.ops, &prm, p, s.vv, &s.scratch, loads);
         double total[FSI_DIM] = {0}, on_boundary[FSI_DIM] = {0}, scale = 0.0;
@@ -346,7 +349,7 @@ static void test_continuity(void)
             p->v[i * FSI_DIM + d] = 0.3 + e * p->x[i * FSI_DIM + d];
     memcpy(s.vv, p->v, (size_t)p->n * FSI_DIM * sizeof(double));
     scene_update(&s);
-    ulph_momentum_params prm = {0.0, 0.0, s.k.h, 30.0, 1000.0, {0}, 0};
+    ulph_momentum_params prm = {0.0, 0.0, s.k.h, 30.0, 1000.0, {0}, 0, 0.0, 0.0};
     ulph_momentum_rates(&s.ops, &prm, p, s.vv, &s.scratch, s.drho, s.acc);
     double worst = 0.0;
     for (int i = 0; i < p->n; i++)
@@ -356,9 +359,47 @@ static void test_continuity(void)
     scene_free(&s);
 }
 
+/* The wall contact of 004 Eqs. 21-24 (ulph_contact.h): the printed value at half a
+ * spacing (h = 1.2 dx: eta = 0.56, f = 2/3, zeta = 1/2), nothing at and beyond a
+ * spacing, repulsive inside it, and continuous where f changes branch (eta = 2/3, 1, 2,
+ * the last reached with h = 0.5 dx): a jump there would be an impulse to the particle
+ * crossing it. Continuity is checked as |F(r + e) - F(r - e)| against the largest
+ * slope times 2e, with e = 1e-9 dx. */
+static void test_contact(void)
+{
+    const double dx = 0.004, c0 = 30.0, k_c2 = 0.01 * c0 * c0;
+    const double h = 1.2 * dx, inv = 1.0 / (0.75 * h);
+    const double at_half = ulph_contact_factor(0.5 * dx, dx, k_c2, inv);
+    const double expected = k_c2 * 0.5 * (2.0 / 3.0) / (0.25 * dx * dx);
+    printf("contact: k c0^2 zeta f / r^2 at dx / 2 = %.6g (expected %.6g)\n", at_half, expected);
+    CHECK(fabs(at_half - expected) < 1e-12 * expected, "contact at dx / 2: %g, not %g", at_half,
+          expected);
+    CHECK(ulph_contact_factor(dx, dx, k_c2, inv) == 0.0 &&
+              ulph_contact_factor(1.5 * dx, dx, k_c2, inv) == 0.0 &&
+              ulph_contact_factor(0.0, dx, k_c2, inv) == 0.0,
+          "contact not zero at r = dx, 1.5 dx or 0");
+    double worst_jump = 0.0;
+    const double hs[2] = {1.2 * dx, 0.5 * dx}, etas[3] = {2.0 / 3.0, 1.0, 2.0};
+    for (int a = 0; a < 2; a++)
+        for (int b = 0; b < 3; b++) {
+            const double i_s = 1.0 / (0.75 * hs[a]), r = etas[b] / i_s, e = 1e-9 * dx;
+            if (r >= dx)
+                continue;
+            /* F(r) = factor * r, the force per unit mass. */
+            const double lo = ulph_contact_factor(r - e, dx, k_c2, i_s) * (r - e);
+            const double hi = ulph_contact_factor(r + e, dx, k_c2, i_s) * (r + e);
+            const double slope = k_c2 * 4.0 / (dx * dx * dx) + k_c2 * 4.0 * i_s / (dx * r);
+            worst_jump = fmax(worst_jump, fabs(hi - lo) / (2.0 * e * slope));
+            CHECK(lo > 0.0 && hi >= 0.0, "contact not repulsive at r = %g", r);
+        }
+    printf("contact: largest jump across a branch over slope x 2e = %.3g\n", worst_jump);
+    CHECK(worst_jump < 1.0, "contact force jumps where f changes branch (%g)", worst_jump);
+}
+
 int main(void)
 {
     test_eos();
+    test_contact();
 #if FSI_DIM == 2
     test_hydrostatic();
 #endif
