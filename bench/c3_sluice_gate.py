@@ -41,6 +41,7 @@ def summary(run):
     log = os.path.join(run, "run.log")
     flog = os.path.join(run, "fluid.log")
     inside = fsi_results.log_match(flog, r"interface: .*?(at most [0-9]+ at once, in [0-9]+ windows)")
+    in_walls = walls_count(run, case)
     return dict(
         run=run, dx=dx, t=t, ux=ux, uy=uy, nf=nf, ng=ng, nc=nc,
         ended=t[-1] >= float(case["run"]["end_time"]) - 1e-9,
@@ -51,14 +52,24 @@ def summary(run):
         windows=fsi_results.log_match(log, r"\nwindows = ([0-9]+)", "?"),
         wall=fsi_results.wall_time(run),
         threads=fsi_results.log_match(flog, r"on ([0-9]+) thread\(s\)", "?"),
-        inside=inside or "?")
+        inside=inside or "?", in_walls=in_walls)
+
+
+def walls_count(run, case):
+    """(most in any frame, in the last frame) of the fluid particles deeper than dx / 2
+    in a wall (fsi_results.wall_boxes): the floor under the gate is where water leaked."""
+    import h5py
+    boxes = fsi_results.wall_boxes(case)
+    with h5py.File(os.path.join(run, "fluid.h5"), "r") as f:
+        counts = [fsi_results.fluid_in_walls(boxes, f["frames"][k]) for k in sorted(f["frames"])]
+    return max(counts), counts[-1]
 
 
 def markdown(results):
     lines = ["| dx | T / dx | fluid particles | solid points (gate + clamp) | end | windows "
              "| gate starts to move | largest ux (t) | largest uy (t) | ux at the end "
-             "| fluid particles inside the solid | wall time | threads |",
-             "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |"]
+             "| fluid particles inside the solid | fluid in walls (most, end) | wall time | threads |",
+             "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |"]
     for r in results:
         end = f"t = {r['t'][-1]:.3f} s" if r["ended"] else \
             f"stopped, last probe row t = {r['t'][-1]:.3f} s"
@@ -68,7 +79,7 @@ def markdown(results):
             f"| {end} | {r['windows']} | {r['t_move']:.3f} s "
             f"| {r['ux_max'][0]:.4f} m ({r['ux_max'][1]:.3f} s) "
             f"| {r['uy_max'][0]:.4f} m ({r['uy_max'][1]:.3f} s) | {r['ux_end']:.4f} m "
-            f"| {r['inside']} | {wall} | {r['threads']} |")
+            f"| {r['inside']} | {r['in_walls'][0]}, {r['in_walls'][1]} | {wall} | {r['threads']} |")
     return "\n".join(lines) + "\n"
 
 
@@ -169,7 +180,8 @@ def main():
               f"solid={r['ng']}+{r['nc']} t_end={r['t'][-1]:.4f} windows={r['windows']} "
               f"t_move={r['t_move']:.3f} ux_max={r['ux_max'][0]:.4f}@{r['ux_max'][1]:.3f} "
               f"uy_max={r['uy_max'][0]:.4f}@{r['uy_max'][1]:.3f} ux_end={r['ux_end']:.4f} "
-              f"inside: {r['inside']} wall={r['wall']}")
+              f"inside: {r['inside']} in_walls_max={r['in_walls'][0]} "
+              f"in_walls_end={r['in_walls'][1]} wall={r['wall']}")
     if not results:
         return
     if args.md:

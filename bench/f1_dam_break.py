@@ -57,8 +57,7 @@ def surge_front(run_dir):
     floor = 0.0 if not walls else max(
         vec(case[w]["max"])[1] for w in walls
         if vec(case[w]["max"])[0] - vec(case[w]["min"])[0] > 4 * a)
-    boxes = [(np.array(vec(case[w]["min"])) + 0.5 * dx, np.array(vec(case[w]["max"])) - 0.5 * dx)
-             for w in walls]
+    boxes = fsi_results.wall_boxes(case)
     times, fronts, in_walls, n_fluid = [], [], [], 0
     with h5py.File(os.path.join(run_dir, "fluid.h5"), "r") as f:
         for k in sorted(f["frames"].keys()):
@@ -69,10 +68,7 @@ def surge_front(run_dir):
             near = fluid & (x[:, 1] < floor + 2.0 * dx)
             times.append(float(fr.attrs["time"]))
             fronts.append(float(x[near, 0].max()) if near.any() else float("nan"))
-            inside = np.zeros(len(x), dtype=bool)
-            for lo, hi in boxes:
-                inside |= np.all((x >= lo) & (x <= hi), axis=1)
-            in_walls.append(int((inside & fluid).sum()))
+            in_walls.append(fsi_results.fluid_in_walls(boxes, fr))
     return dx, a, g, n_fluid, np.array(times), np.array(fronts), np.array(in_walls)
 
 

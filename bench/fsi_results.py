@@ -95,3 +95,29 @@ def draw_coupled_frame(ax, fluid_frame, solid_frame, clamped, size, p_max,
                         cmap=solid_cmap, vmin=lo, vmax=hi, lw=0)
     ax.scatter(xs[clamped, 0], xs[clamped, 1], s=size, c="k", lw=0)
     return fs, ss
+
+
+def wall_boxes(case):
+    """The [fluid.wall] boxes of a case shrunk by dx / 2 on every side: a fluid particle
+    whose centre is in one is deeper in the wall than the centres of its first row."""
+    import numpy as np
+
+    def vec(text):
+        return np.array([float(x) for x in text.replace(",", " ").split()])
+    dx = float(case["fluid"]["spacing"])
+    return [(vec(case[w]["min"]) + 0.5 * dx, vec(case[w]["max"]) - 0.5 * dx)
+            for w in case if w.startswith("fluid.wall")]
+
+
+def fluid_in_walls(boxes, frame):
+    """How many fluid particles of a fluid.h5 frame group are inside wall_boxes."""
+    import numpy as np
+    x = frame["position"][()][:, :len(boxes[0][0])] if boxes else None
+    if x is None:
+        return 0
+    fluid = (frame["flags"][()].ravel() & 1) > 0
+    inside = np.zeros(len(x), dtype=bool)
+    for lo, hi in boxes:
+        inside |= np.all((x >= lo) & (x <= hi), axis=1)
+    return int((inside & fluid).sum())
+
