@@ -122,6 +122,16 @@ static void compliance(const dp_case *d, const double s[6], double e[6])
         e[i] = ((1.0 + d->nu) * s[i] - (i < 3 ? d->nu * tr : 0.0)) / d->E;
 }
 
+/* xorshift64: reproducible random paths without the C library's rand(). */
+static double test_uniform_dp(void)
+{
+    static unsigned long long state = 0x9E3779B97F4A7C15ULL;
+    state ^= state << 13;
+    state ^= state >> 7;
+    state ^= state << 17;
+    return (double)(state >> 11) / 9007199254740992.0;
+}
+
 /* ------------------------------------------------------------- one step */
 
 typedef struct {
@@ -412,6 +422,70 @@ static void test_apex(void)
           "sand pulled apart carries no stress");
 }
 
+/* (f) Plastic flow only dissipates: for every step of random plane-strain paths the
+ * backward-Euler dissipation sigma_new : deps_p, with deps_p = deps - C : dsigma from
+ * the test's own compliance, is >= 0. This is a theorem of the model, not an
+ * observation: on the cone sigma : dg/dsigma = k + (beta - alpha) I1 >= 0 because
+ * beta <= alpha and I1 <= k / alpha there, and at the apex p_apex tr(deps_p) =
+ * p_apex (p_tr - p_apex) / K >= 0 because the apex return needs p_tr > p_apex. So any
+ * measurable negative value is a wrong return. Tolerance 1e-12 of
+ * |sigma_new| (|deps| + |dsigma| / E), the round-off of forming deps_p by subtraction
+ * (~1e-16 of those terms; a return off the cone by a relative 1e-6 gives ~1e-6).
+ * Increments of 0.1 to 60 yield strains k / G (60 is what a plastic hinge of the C5
+ * baffle sees in one sub-step), directions changed every 10 steps, with volumetric
+ * parts of both signs (so the apex is reached). The C5 baffle's instability was not
+ * here (docs/nosbpd.md, Failure): this guards the return mapping against it. */
+static void test_dissipation(void)
+{
+    const double psis[3] = {0.0, 6.5, 13.0};
+    const double scales[4] = {0.1, 1.0, 10.0, 60.0};
+    double worst = 0.0;
+    int steps = 0, negative = 0, apex = 0;
+    for (int ip = 0; ip < 3; ip++)
+        for (int is = 0; is < 4; is++) {
+            dp_case d = make_dp(30e6, 0.25, 5e3, 13.0, psis[ip]);
+            const double ey = d.k / (d.E / (2.0 * (1.0 + d.nu)));
+            for (int path = 0; path < 40; path++) {
+                double sig[6] = {0}, dir[6] = {0};
+                material_state st;
+                memset(&st, 0, sizeof st);
+                for (int n = 0; n < 200; n++) {
+                    if (n % 10 == 0) {
+                        dir[0] = 2.0 * test_uniform_dp() - 1.0;
+                        dir[1] = 2.0 * test_uniform_dp() - 1.0;
+                        dir[3] = 2.0 * test_uniform_dp() - 1.0;
+                    }
+                    double deps[6] = {0}, old[6], dsig[6], de_el[6], dp[6];
+                    for (int c = 0; c < 6; c++)
+                        deps[c] = scales[is] * ey * dir[c];
+                    memcpy(old, sig, sizeof old);
+                    double in[6];
+                    memcpy(in, deps, sizeof in);
+                    material_update(&d.m, in, sig, &st);
+                    for (int c = 0; c < 6; c++)
+                        dsig[c] = sig[c] - old[c];
+                    compliance(&d, dsig, de_el);
+                    for (int c = 0; c < 6; c++)
+                        dp[c] = deps[c] - de_el[c];
+                    const double dissip = ddot(sig, dp);
+                    const double scale = sqrt(ddot(sig, sig)) *
+                                         (sqrt(ddot(deps, deps)) + sqrt(ddot(dsig, dsig)) / d.E);
+                    const double rel = scale > 0.0 ? dissip / scale : 0.0;
+                    if (rel < worst)
+                        worst = rel;
+                    negative += rel < -1e-12;
+                    apex += st.yielding && sqrt_j2(sig) == 0.0;
+                    steps++;
+                }
+            }
+        }
+    CHECK(negative == 0, "%d of %d steps dissipate a negative energy (worst %.3g of "
+          "|sigma| (|deps| + |dsigma| / E), tolerance -1e-12)", negative, steps, worst);
+    CHECK(apex > 0, "the random paths never reached the apex");
+    printf("test_drucker_prager: dissipation over %d random steps (%d at the apex): worst "
+           "%.2g of |sigma| (|deps| + |dsigma| / E) (tol -1e-12)\n", steps, apex, worst);
+}
+
 /* Frictionless limit (phi = 0): von Mises in plane strain with sqrt(J2) = c; no
  * apex exists, and the radial return is exact. */
 static void test_frictionless(void)
@@ -460,6 +534,7 @@ int main(void)
     test_elastic_inside();
     test_apex();
     test_frictionless();
+    test_dissipation();
 
     printf("test_drucker_prager: %d plastic steps (%d apex returns); worst |f|/k %.2g (tol "
            "%.0e), 1-cos %.2g (tol %.0e), ratio %.2g (tol %.0e), split %.2g (tol %.0e), "
