@@ -69,10 +69,12 @@
  * k L^2 / t = k L sqrt(|M| |M^-1|). Measured with h = 1.2 dx, delta = 3 h in 2D
  * (tests/unit/test_ulph_operators.c): 2.0 inside a lattice, 3.2 for any particle of a
  * lattice jittered by 0.3 dx (edges and corners included), 2.7 in a layer two
- * particles thick (4.3 jittered), 211 in a single jittered row of particles (a wavy
- * filament, kept); five particles on a line with the middle one 0.01 dx off it give
- * 1.3e4 (flagged), an exact line is singular. docs/ulph.md has the table. */
-#define ULPH_MAX_CONDITION_M 1e3
+ * particles thick (4.3 jittered), up to 211 in a single jittered row of particles (a
+ * wavy filament: its worst families flagged, 4 of 30); five particles on a line with
+ * the middle one 0.01 dx off it give 1.3e4 (flagged), an exact line is singular.
+ * 1e2, not the 1e3 it was: spray filaments thrown off a splash went unstable with
+ * condition numbers of 112-187 (C5, docs/ulph.md). docs/ulph.md has the table. */
+#define ULPH_MAX_CONDITION_M 1e2
 
 /* Below this many particles the loops run on one thread (a fork costs more than the
  * work; the results are the same either way). */

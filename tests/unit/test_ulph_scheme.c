@@ -360,8 +360,8 @@ static void test_continuity(void)
 }
 
 /* The wall contact of 004 Eqs. 21-24 (ulph_contact.h): the printed value at half a
- * spacing (h = 1.2 dx: eta = 0.56, f = 2/3, zeta = 1/2), nothing at and beyond a
- * spacing, repulsive inside it, and continuous where f changes branch (eta = 2/3, 1, 2,
+ * spacing (h = 1.2 dx: eta = 0.56, f = 2/3, zeta = 1/2) and the same magnitude closer
+ * in (held), nothing at and beyond a spacing, repulsive inside it, and continuous where f changes branch (eta = 2/3, 1, 2,
  * the last reached with h = 0.5 dx): a jump there would be an impulse to the particle
  * crossing it. Continuity is checked as |F(r + e) - F(r - e)| against the largest
  * slope times 2e, with e = 1e-9 dx. */
@@ -374,6 +374,14 @@ static void test_contact(void)
     printf("contact: k c0^2 zeta f / r^2 at dx / 2 = %.6g (expected %.6g)\n", at_half, expected);
     CHECK(fabs(at_half - expected) < 1e-12 * expected, "contact at dx / 2: %g, not %g", at_half,
           expected);
+    /* Held below dx / 2: the same magnitude (factor times r) at dx / 4 and dx / 100. */
+    for (int m = 0; m < 2; m++) {
+        const double r = m == 0 ? 0.25 * dx : 0.01 * dx;
+        const double held = ulph_contact_factor(r, dx, k_c2, inv) * r;
+        CHECK(fabs(held - at_half * 0.5 * dx) < 1e-12 * at_half * dx,
+              "contact at r = %g not held at its value at dx / 2: %g, not %g", r, held,
+              at_half * 0.5 * dx);
+    }
     CHECK(ulph_contact_factor(dx, dx, k_c2, inv) == 0.0 &&
               ulph_contact_factor(1.5 * dx, dx, k_c2, inv) == 0.0 &&
               ulph_contact_factor(0.0, dx, k_c2, inv) == 0.0,
