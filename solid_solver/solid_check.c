@@ -13,6 +13,7 @@
 
 #include "case_check.h"
 #include "geometry.h"
+#include "solid_interface.h"
 #include "solid_keys.h"
 
 static const char axis_name[3] = {'x', 'y', 'z'};
@@ -280,6 +281,22 @@ static void check_mode(fsi_case_checker *k, const char *role)
                 "free end (> 0)");
 }
 
+/* A given interface_depth must cover the fluid's reach below the surface
+ * (solid_interface_fluid_reach): shallower, the fluid's kernel would meet a skin with
+ * nothing behind it (missing volume in its sums) wherever the solid is finer than it. */
+static void check_interface_depth(fsi_case_checker *k, const char *role)
+{
+    const double depth = fsi_case_get_real(k->c, role, "interface_depth", 0.0);
+    double dx_f = 0.0;
+    const double reach = solid_interface_fluid_reach(k->c, &dx_f);
+    if (given(k->c, role, "interface_depth") && depth > 0.0 && reach > 0.0 &&
+        depth < reach * (1.0 - 1e-9))
+        fsi_case_problem(k, role, "interface_depth",
+                "%.6g m does not cover the fluid's reach below the surface, %.6g m (its "
+                "kernel support less half its spacing %.6g m): use at least that, or 0 to "
+                "derive it", depth, reach, dx_f);
+}
+
 int solid_geometry_check(const fsi_case *c, const char *role, FILE *errors)
 {
     fsi_case_checker k = {c, errors, 0};
@@ -303,6 +320,7 @@ int solid_geometry_check(const fsi_case *c, const char *role, FILE *errors)
         check_cracks(&k, &g);
     }
     check_mode(&k, role);
+    check_interface_depth(&k, role);
     solid_geometry_free(&g);
     return k.errors;
 }

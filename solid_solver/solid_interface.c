@@ -2,6 +2,8 @@
 #include "solid_interface.h"
 
 #include <math.h>
+
+#include "neighbour_grid.h"
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -11,6 +13,7 @@ int solid_interface_init(solid_interface_buffers *b, int n_particles)
     memset(b, 0, sizeof *b);
     size_t n = n_particles > 0 ? (size_t)n_particles : 1, v = n * FSI_DIM;
     b->surface = calloc(n, 1);
+    b->band = calloc(n, 1);
     b->received = calloc(n, 1);
     b->state.id = malloc(n * sizeof *b->state.id);
     b->state.position = malloc(v * sizeof(double));
@@ -19,7 +22,7 @@ int solid_interface_init(solid_interface_buffers *b, int n_particles)
     b->state.volume = malloc(n * sizeof(double));
     b->x_window = malloc(v * sizeof(double));
     b->v_mean = calloc(v, sizeof(double));   /* read (times 0) before a first gather */
-    if (!b->surface || !b->received || !b->state.id || !b->state.position ||
+    if (!b->surface || !b->band || !b->received || !b->state.id || !b->state.position ||
         !b->state.velocity || !b->state.acceleration || !b->state.volume || !b->x_window ||
         !b->v_mean) {
         solid_interface_free(b);
@@ -32,6 +35,7 @@ int solid_interface_init(solid_interface_buffers *b, int n_particles)
 void solid_interface_free(solid_interface_buffers *b)
 {
     free(b->surface);
+    free(b->band);
     free(b->received);
     free(b->state.id);
     free(b->state.position);
@@ -41,6 +45,80 @@ void solid_interface_free(solid_interface_buffers *b)
     free(b->x_window);
     free(b->v_mean);
     memset(b, 0, sizeof *b);
+}
+
+/* 000 Eq. 17's kernel: h = 1.2 dx, support 3 h (the ULPH defaults, fluid_solver/ulph). */
+#define ULPH_SMOOTHING_FACTOR 1.2
+#define ULPH_SUPPORT_FACTOR 3.0
+
+double solid_interface_fluid_reach(const fsi_case *c, double *fluid_spacing)
+{
+    const double dx_f = fsi_case_get_real(c, "fluid", "spacing", 0.0);
+    if (fluid_spacing)
+        *fluid_spacing = dx_f > 0.0 ? dx_f : 0.0;
+    const char *solver = fsi_case_get(c, "fluid", "solver");
+    if (!(dx_f > 0.0) || !solver || strcmp(solver, "ulph") != 0)
+        return 0.0;
+    const double support =
+        fsi_case_get_real(c, "fluid", "smoothing_factor", ULPH_SMOOTHING_FACTOR) *
+        fsi_case_get_real(c, "fluid", "support_factor", ULPH_SUPPORT_FACTOR) * dx_f;
+    return support - 0.5 * dx_f;
+}
+
+double solid_interface_depth(const fsi_case *c)
+{
+    const double given = fsi_case_get_real(c, "solid", "interface_depth", 0.0);
+    return given > 0.0 ? given : solid_interface_fluid_reach(c, NULL);
+}
+
+/* Lattice offsets (other than 0) of length <= r. */
+static long lattice_count(double r, double dx)
+{
+    const int m = (int)floor(r / dx);
+    long count = 0;
+    int idx[FSI_DIM];
+    for (int d = 0; d < FSI_DIM; d++)
+        idx[d] = -m;
+    for (;;) {
+        double len2 = 0.0;
+        for (int d = 0; d < FSI_DIM; d++)
+            len2 += (idx[d] * dx) * (idx[d] * dx);
+        count += len2 <= r * r;
+        int d = 0;
+        while (d < FSI_DIM && ++idx[d] > m)
+            idx[d++] = -m;
+        if (d == FSI_DIM)
+            break;
+    }
+    return count - 1;   /* the offset 0 */
+}
+
+int solid_interface_band(solid_interface_buffers *b, const solid_particles *p, double depth)
+{
+    const int n_all = p->n < b->capacity ? p->n : b->capacity;
+    memset(b->band, 0, (size_t)b->capacity);
+    if (!(depth > 0.0) || n_all == 0)
+        return 0;
+    /* The tolerance of the model's horizon (nosbpd_bonds.h): lattice distances that
+     * equal the radius up to round-off count as inside. */
+    const double dx = p->spacing, r = depth + 0.5 * dx + 1e-6 * dx;
+    const long full = lattice_count(r, dx);
+    fsi_neighbour_grid grid;
+    fsi_grid_init(&grid);
+    if (fsi_grid_build(&grid, p->x0, n_all, r) != 0)
+        return -1;
+    int count = 0;
+    for (int i = 0; i < n_all; i++) {
+        if (p->flags[i] & SOLID_MIRRORED)
+            continue;
+        /* p's own point is reported too. */
+        const long near = (long)fsi_grid_neighbours(&grid, &p->x0[i * FSI_DIM], r, NULL, NULL,
+                                                    0) - 1;
+        b->band[i] = near < full;
+        count += b->band[i];
+    }
+    fsi_grid_free(&grid);
+    return count;
 }
 
 int solid_interface_gather(solid_interface_buffers *b, const solid_particles *p,
@@ -62,7 +140,7 @@ int solid_interface_gather(solid_interface_buffers *b, const solid_particles *p,
             b->x_window[k] = p->x[k];
             b->v_mean[k] = v_mean[d];
         }
-        if (!b->surface[i])
+        if (!b->surface[i] && !b->band[i])
             continue;
         b->state.id[n] = p->id[i];
         for (int d = 0; d < FSI_DIM; d++) {
@@ -100,7 +178,7 @@ int solid_interface_take(solid_interface_buffers *b, const fsi_interface *in,
                      "exist (the solid has %d particles)", (int)id, p->n);
             return -1;
         }
-        if (!b->surface[id]) {
+        if (!b->surface[id] && !b->band[id]) {
             snprintf(msg, msg_size, "the fluid sent a load for particle id %d, which was not "
                      "sent to it in this window", (int)id);
             return -1;
@@ -128,7 +206,8 @@ int solid_interface_take(solid_interface_buffers *b, const fsi_interface *in,
 void solid_interface_damping(const solid_interface_buffers *b, const solid_particles *p,
                              const double *force, double impedance, double *damping)
 {
-    const double area = pow(p->spacing, FSI_DIM - 1);
+    const double area = pow(p->spacing, FSI_DIM - 1) *
+                        (b->fluid_spacing > 0.0 ? p->spacing / b->fluid_spacing : 1.0);
     const int n_all = p->n < b->capacity ? p->n : b->capacity;
     for (int i = 0; i < n_all; i++) {
         int loaded = 0;

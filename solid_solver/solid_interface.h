@@ -14,12 +14,17 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "case_file.h"
 #include "participant.h"
 #include "solid_particles.h"
 
 typedef struct {
     int capacity;               /* particles the arrays hold (all of them) */
     uint8_t *surface;           /* per particle: 1 = sent this window */
+    uint8_t *band;              /* per particle: 1 = within the interface depth of the
+                                 * body's surface (solid_interface_band), always sent */
+    double fluid_spacing;       /* the fluid's spacing [m] for the impedance area; 0: the
+                                 * solid's (solid_interface_damping) */
     uint8_t *received;          /* per particle: a load arrived (duplicate check) */
     fsi_interface state;        /* what is published: n, id, position, velocity,
                                  * acceleration, volume (pressure, force NULL) */
@@ -33,7 +38,28 @@ typedef struct {
 int solid_interface_init(solid_interface_buffers *b, int n_particles);
 void solid_interface_free(solid_interface_buffers *b);
 
-/* Copies the particles with b->surface[i] set into b->state at the start of a window
+/* The depth [m] below the body's surface that the fluid of case c reaches
+ * (docs/coupling.md, Unequal spacings): for a ULPH fluid its kernel support
+ * smoothing_factor * support_factor * dx_f (000 Eq. 17: 1.2 * 3 * dx_f) less half a
+ * fluid spacing, the gap its particles keep from a wall; 0 for other fluids or
+ * without a [fluid] section (their reach is unknown: the model's surface set alone
+ * is sent). *fluid_spacing (may be NULL) gets [fluid] spacing, 0 if none. */
+double solid_interface_fluid_reach(const fsi_case *c, double *fluid_spacing);
+
+/* The interface depth of case c's solid: [solid] interface_depth when given (> 0),
+ * else solid_interface_fluid_reach. */
+double solid_interface_depth(const fsi_case *c);
+
+/* Marks b->band[i] = 1 for every particle within depth D of the body's surface in the
+ * reference configuration x0, i.e. with fewer particles within D + dx/2 of it (dx
+ * the spacing) than a full lattice has there: on a lattice a point at depth d below
+ * a flat face has its nearest empty site d + dx/2 away. Mirrored clamp points fill
+ * their sites (the fluid meets no surface there) but are never marked: they are
+ * not material. D = 0 marks nothing. Returns how many are marked, or -1 when memory
+ * runs out. Once, at start-up: the band is fixed to the reference configuration. */
+int solid_interface_band(solid_interface_buffers *b, const solid_particles *p, double depth);
+
+/* Copies the particles with b->surface[i] or b->band[i] set into b->state at the start of a window
  * that follows one of length dt_last (0 for the first); returns its n.
  *
  * Position is the particle's. Velocity and acceleration are the means over the
@@ -66,8 +92,12 @@ int solid_interface_take(solid_interface_buffers *b, const fsi_interface *in,
  * back at once with its acoustic impedance z = rho0 c0: a wall moving into still water
  * at v raises the pressure by z v. The solid applies that answer itself,
  *     F(t) = F_k - z A (v(t) - u),
- * on every particle that carries a non-zero load (A = spacing^(dim-1), the face one particle
- * presents). Without it the held load lags the solid's motion by up to a window, and
+ * on every particle that carries a non-zero load, with A = dx^(dim-1) (dx / dx_f): the
+ * face one particle presents, times its layer's share of a fluid spacing (dx_f =
+ * b->fluid_spacing, 1 when 0). The fluid's load spreads over the layers within its
+ * reach, about 3.6 dx_f deep: at equal spacings 3-4 layers each with the face's z A,
+ * and with a finer solid each of its more, thinner layers gets its share, so that
+ * the correction stays the same multiple of z whatever the solid's spacing. Without it the held load lags the solid's motion by up to a window, and
  * every mode that turns by more than a quarter period within a window is pumped
  * (the load works against the velocity one window late): a plate's short bending
  * waves grew without bound. The term vanishes when the solid follows u, i.e. as the

@@ -158,6 +158,19 @@ static int setup(solid_run *s, fsi_participant *part)
         snprintf(s->msg, ms, "out of memory for %d solid particles", p->n);
         return -1;
     }
+    /* The fluid's reach below the surface (docs/coupling.md, Unequal spacings). */
+    const double reach = solid_interface_fluid_reach(c, &s->iface.fluid_spacing);
+    const double depth = solid_interface_depth(c);
+    const int in_band = solid_interface_band(&s->iface, p, depth);
+    if (in_band < 0) {
+        snprintf(s->msg, ms, "out of memory marking the points within %g m of the surface",
+                 depth);
+        return -1;
+    }
+    if (depth > 0.0)
+        fsi_info("interface: %d points within %g m of the surface are sent to the fluid "
+                 "(its reach %g m, spacing %g m; the solid's spacing %g m)", in_band, depth,
+                 reach, s->iface.fluid_spacing, p->spacing);
     if (solid_loads_init(&s->loads, &s->geometry, p, s->msg, ms) != 0)
         return -1;
     /* c0 = sqrt(K / rho) as Gray et al. 2001 define it for the mode's amplitude

@@ -84,3 +84,14 @@ expect_bad watchdog_vs_heartbeat \
 # Several errors are all reported at once.
 sed 's/^particles = 50/particls = 50/; s/^damping = 2.0/damping = -1/' good.ini >bad.ini
 expect_bad two_errors "has 2 errors"
+
+# A solid interface depth that does not cover the fluid's reach below the surface
+# (docs/coupling.md, Unequal spacings): C6 with the solid 4 times finer than its fluid,
+# whose ULPH kernel reaches 1.2 * 3 * 2.5 mm - 1.25 mm = 7.75 mm below the surface.
+sed 's/^spacing = 0.0025$/&\ninterface_depth = 0.005/; T; :a; n; ba' \
+  "$FSI_SOURCE_DIR/cases/c6_notched_obstacle.ini" >bad.ini
+line=$(grep -n '^interface_depth' bad.ini | cut -d: -f1)
+[ -n "$line" ] || fail "interface_depth not inserted into bad.ini"
+expect_bad interface_depth \
+  "^bad.ini:$line: \[solid\] interface_depth: 0.005 m does not cover the fluid's reach below the surface, 0.00775 m" \
+  --set solid.spacing=0.000625

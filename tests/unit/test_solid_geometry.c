@@ -575,6 +575,114 @@ static void test_interface(void)
     solid_interface_free(&b);
 }
 
+/* The band of points within the interface depth D of the body's surface
+ * (solid_interface_band), on a solid four times finer than the fluid: a block on a
+ * mirror clamp (which fills its sites: no surface below the block) marks exactly the
+ * points whose distance to the nearest free face is at most D, here D = 1.2 * 3 * dx_f
+ * - dx_f / 2 = 0.031 m, 12 layers of dx = 2.5 mm (the horizon-cut set of a 3 dx
+ * horizon is 3 of them). They are sent (gather), their loads are taken, and each
+ * gets the impedance area dx^(dim-1) dx / dx_f. */
+static void test_interface_band(void)
+{
+    const double dx = 0.0025, dx_f = 0.01;
+    /* Only the first FSI_DIM of x, y (and z 0 .. 0.03) are used. */
+    /* The clamp is as deep as the band's radius D + dx/2 (13 layers): a thinner one
+     * would leave empty sites below it within reach of the lowest body points. */
+    solid_block blocks[2] = {test_block("solid.block clamp", 0.0, 0.1, -0.0325, 0.0, dx),
+                             test_block("solid.block body", 0.0, 0.1, 0.0, 0.1, dx)};
+    solid_region r = test_region("solid.region foot", SOLID_REGION_CLAMP, -1.0, 1.0, -0.0325, 0.0);
+    r.clamp_face = solid_clamp_face_parse("y_max");
+    solid_geometry g = {.spacing = dx, .n_blocks = 2, .n_regions = 1, .blocks = blocks,
+                        .regions = &r};
+    solid_particles p;
+    char msg[256];
+    int unpaired = -1;
+    CHECK(solid_geometry_build(&g, 1000.0, &p, &unpaired, msg, sizeof msg) == 0 &&
+              unpaired == 0, "build: %s", msg);
+
+    char text[512];
+    snprintf(text, sizeof text, "[solid]\nspacing = %g\n\n[fluid]\nsolver = ulph\nspacing = %g\n",
+             dx, dx_f);
+    fsi_case *c = fsi_case_read(write_case("band.ini", text), stderr);
+    CHECK(c != NULL, "cannot read band.ini");
+    double spacing_f = 0.0;
+    const double reach = c ? solid_interface_fluid_reach(c, &spacing_f) : 0.0;
+    const double depth = c ? solid_interface_depth(c) : 0.0;
+    CHECK(fabs(reach - 0.031) < 1e-15 && depth == reach && spacing_f == dx_f,
+          "reach %.17g (want 0.031), depth %.17g, fluid spacing %g", reach, depth, spacing_f);
+    fsi_case_free(c);
+
+    solid_interface_buffers b;
+    CHECK(solid_interface_init(&b, p.n) == 0, "init");
+    const int marked = solid_interface_band(&b, &p, depth);
+    const double hi[3] = {0.1, 0.1, 0.03};
+    int expected = 0, wrong = 0, clamp_marked = 0;
+    for (int i = 0; i < p.n; i++) {
+        const double *x = &p.x0[i * FSI_DIM];
+        if (p.flags[i] & SOLID_MIRRORED) {
+            clamp_marked += b.band[i];
+            continue;
+        }
+        /* Free faces: x = 0, x = 0.1, y = 0.1 (and z = 0, 0.03); the floor is the clamp. */
+        double d = fmin(x[0], fmin(hi[0] - x[0], hi[1] - x[1]));
+        for (int k = 2; k < FSI_DIM; k++)
+            d = fmin(d, fmin(x[k], hi[k] - x[k]));
+        const int in = d <= depth + 1e-9;
+        expected += in;
+        wrong += in != b.band[i];
+    }
+    CHECK(marked == expected && wrong == 0 && clamp_marked == 0,
+          "band: %d marked, %d expected, %d points wrong, %d clamp points marked", marked,
+          expected, wrong, clamp_marked);
+    if (FSI_DIM == 2)   /* 12 columns each side, 12 rows over the 16 between them */
+        CHECK(marked == 40 * 24 + 12 * 16, "band of %d points, want %d", marked, 40 * 24 + 12 * 16);
+    /* At equal spacings the default depth 3.1 dx is the 3 layers of a 3 dx horizon. */
+    CHECK(solid_interface_band(&b, &p, 3.1 * dx) == (FSI_DIM == 2 ? 40 * 6 + 3 * 34 : marked) ||
+              FSI_DIM != 2,
+          "band at equal spacings: %d points, want %d", solid_interface_band(&b, &p, 3.1 * dx),
+          40 * 6 + 3 * 34);
+    CHECK(solid_interface_band(&b, &p, 0.0) == 0, "depth 0 marks points");
+
+    /* Sent, loaded and damped: the point deepest in the band, in the middle of the left
+     * side, with no horizon-cut mark. */
+    solid_interface_band(&b, &p, depth);
+    int deep = -1;
+    for (int i = 0; i < p.n && deep < 0; i++)
+        if (b.band[i] && fabs(p.x0[i * FSI_DIM] - 11.5 * dx) < 1e-12 &&
+            fabs(p.x0[i * FSI_DIM + 1] - 20.5 * dx) < 1e-12)
+            deep = i;
+    CHECK(deep >= 0, "no band point at depth 11.5 dx");
+    if (deep >= 0) {
+        CHECK(solid_interface_gather(&b, &p, 0.0) == marked, "gather sends %d, want %d",
+              b.state.n, marked);
+        int32_t ids[1] = {deep};
+        double f[FSI_DIM] = {0}, pr[1] = {1.0};
+        f[0] = 2.0;
+        fsi_interface in = {1, ids, NULL, NULL, NULL, NULL, pr, f, 0.0};
+        double *force = calloc((size_t)p.n * FSI_DIM, sizeof *force);
+        double *pressure = calloc((size_t)p.n, sizeof *pressure);
+        double *damping = calloc((size_t)p.n, sizeof *damping);
+        CHECK(solid_interface_take(&b, &in, &p, force, pressure, msg, sizeof msg) == 0, "%s", msg);
+        const double z = 1000.0 * 34.3;
+        b.fluid_spacing = dx_f;
+        solid_interface_damping(&b, &p, force, z, damping);
+        const double want = z * pow(dx, FSI_DIM - 1) * (dx / dx_f) /
+                            (p.density[deep] * p.volume[deep]);
+        CHECK(fabs(damping[deep] - want) <= 1e-14 * want,
+              "impedance damping %.17g, want %.17g (area dx^(dim-1) dx / dx_f)", damping[deep],
+              want);
+        b.fluid_spacing = 0.0;   /* unknown fluid spacing: the solid's face */
+        solid_interface_damping(&b, &p, force, z, damping);
+        CHECK(damping[deep] == z * pow(dx, FSI_DIM - 1) / (p.density[deep] * p.volume[deep]),
+              "impedance damping without a fluid spacing %.17g", damping[deep]);
+        free(force);
+        free(pressure);
+        free(damping);
+    }
+    solid_interface_free(&b);
+    solid_particles_free(&p);
+}
+
 /* The window means the solid sends (solid_interface_gather): for a body moving as
  * x(t) = x0 + v0 t + a t^2 / 2 over windows of different lengths, the mean velocity of
  * the last window is exact, (x_k - x_{k-1}) / dt = v0 + a (t_{k-1} + t_k) / 2, and so is
@@ -739,6 +847,7 @@ int main(void)
     test_integration();
     test_interface();
     test_interface_window_means();
+    test_interface_band();
     if (failures) {
         fprintf(stderr, "test_solid_geometry: %d of %d checks failed\n", failures, checks);
         return 1;
