@@ -138,14 +138,34 @@ int fluid_coupling_publish(fluid_coupling *c, fsi_participant *part,
     return 0;
 }
 
+/* Whether x is closer to a solid particle than half that particle's spacing; r is the
+ * largest such half spacing. */
+static int closer_than_half_spacing(const fsi_neighbour_grid *grid, const double *x, double r,
+                                    const double *volume)
+{
+    enum { MAX_NEAR = 64 };
+    int near[MAX_NEAR];
+    double r2[MAX_NEAR];
+    const int n = fsi_grid_neighbours(grid, x, r, near, r2, MAX_NEAR);
+    for (int k = 0; k < n && k < MAX_NEAR; k++) {
+        const double half = 0.5 * fluid_particle_side(volume[near[k]]);
+        if (r2[k] < half * half)
+            return 1;
+    }
+    return 0;
+}
+
 int fluid_coupling_count_inside(fluid_coupling *c, const fluid_particles *p, int *first)
 {
     const fluid_boundary *b = &c->boundary;
     *first = -1;
     if (b->n == 0)
         return 0;
-    const double r = 0.5 * p->spacing;
     const double *xb = p->x + (size_t)b->n_fixed * FSI_DIM;
+    const double *vb = p->volume + b->n_fixed;
+    double r = 0.0; /* the largest half spacing of a solid particle */
+    for (int k = 0; k < b->n; k++)
+        r = fmax(r, 0.5 * fluid_particle_side(vb[k]));
     if (fsi_grid_build(&c->solid_grid, xb, b->n, r) != 0)
         return -1;
     /* Only fluid particles in the solid's bounding box (grown by r) can be inside. */
@@ -167,8 +187,7 @@ int fluid_coupling_count_inside(fluid_coupling *c, const fluid_particles *p, int
         int in_box = 1;
         for (int d = 0; d < FSI_DIM; d++)
             in_box &= x[d] >= lo[d] && x[d] <= hi[d];
-        int j;
-        if (in_box && fsi_grid_neighbours(&c->solid_grid, x, r, &j, NULL, 1) > 0) {
+        if (in_box && closer_than_half_spacing(&c->solid_grid, x, r, vb)) {
             if (count == 0)
                 *first = i;
             count++;

@@ -64,10 +64,11 @@ int fluid_coupling_publish(fluid_coupling *c, fsi_participant *part,
                            const fluid_scheme *scheme, const fluid_particles *p, double dt,
                            char *msg, size_t msg_size);
 
-/* The fluid particles inside the solid: closer than half a spacing to one of its
- * particles (a fluid particle at rest on the solid's face sits a whole spacing from the
- * nearest solid particle). Returns how many, or -1 when memory runs out; *first is
- * the index of one of them (-1 if none). */
+/* The fluid particles inside the solid: closer to one of its particles than half that
+ * particle's own spacing, V^(1/DIM) / 2 (the solid's face lies there; a fluid particle
+ * at rest on it sits (dx + dx_solid) / 2 from the nearest solid particle, so a solid
+ * finer than the fluid is judged by its own spacing). Returns how many, or -1 when
+ * memory runs out; *first is the index of one of them (-1 if none). */
 int fluid_coupling_count_inside(fluid_coupling *c, const fluid_particles *p, int *first);
 
 #endif

@@ -627,9 +627,9 @@ static int check_penetration(fluid_run *s, double t, int window)
     }
     if (inside > 0 && s->inside_windows == 0) {
         char at[128];
-        fsi_warn("%d fluid particle(s) inside the solid (closer than half a spacing to a "
-                 "solid particle) at t = %.9g s (window %d), e.g. particle %d at %s", inside,
-                 t, window, s->p.id[first], where_text(s, first, at, sizeof at));
+        fsi_warn("%d fluid particle(s) inside the solid (closer than half the solid's "
+                 "spacing to a solid particle) at t = %.9g s (window %d), e.g. particle %d at %s",
+                 inside, t, window, s->p.id[first], where_text(s, first, at, sizeof at));
     }
     s->inside_windows += inside > 0;
     if (inside > s->inside_max)
@@ -744,8 +744,8 @@ int main(void)
         log_phases(&s.timers);
         if (s.coupling.n_windows > 0)
             fsi_info("interface: %d windows with solid particles; fluid particles inside the "
-                     "solid (closer than half a spacing to a solid particle): at most %d at "
-                     "once, in %ld windows; work of the solid on the fluid %.6g J",
+                     "solid (closer than half the solid's spacing to a solid particle): "
+                     "at most %d at once, in %ld windows; work of the solid on the fluid %.6g J",
                      s.coupling.n_windows, s.inside_max, s.inside_windows,
                      s.coupling.work_on_fluid);
     }

@@ -18,6 +18,7 @@
 #ifndef FSI_FLUID_PARTICLES_H
 #define FSI_FLUID_PARTICLES_H
 
+#include <math.h>
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
@@ -52,6 +53,17 @@ typedef struct {
 } fluid_particles;
 
 /* Frees the arrays and leaves p empty (n = 0, pointers NULL). */
+/* The spacing of a lattice whose cells have this volume, V^(1/DIM): the own spacing of
+ * a wall or solid particle, whose volume is fixed (a solid may be finer than the fluid). */
+static inline double fluid_particle_side(double volume)
+{
+#if FSI_DIM == 2
+    return sqrt(volume);
+#else
+    return cbrt(volume);
+#endif
+}
+
 static inline void fluid_particles_free(fluid_particles *p)
 {
     free(p->id);

@@ -59,16 +59,6 @@ typedef struct {
     double contact_k_c2, spacing, contact_inv_eta_scale; /* ulph_contact.h */
 } pair_context;
 
-/* The edge of the cube (square) of a particle's volume: its spacing on a lattice. */
-static inline double particle_side(double volume)
-{
-#if FSI_DIM == 2
-    return sqrt(volume);
-#else
-    return cbrt(volume);
-#endif
-}
-
 /* The force density on fluid particle I from neighbour J (entry k of I's row); the
  * force on I is V_I times it. trace_i = tr M_I, taken once per row by the caller. */
 static inline void pair_force(const pair_context *c, int i, int64_t k, double trace_i,
@@ -103,7 +93,7 @@ static inline void pair_force(const pair_context *c, int i, int64_t k, double tr
     if (against_wall && c->contact_k_c2 > 0.0) {
         /* The pair's distance at rest, the mean of the two spacings: a solid may be
          * sampled finer or coarser than the fluid (its spacing from its volume). */
-        const double range = 0.5 * (c->spacing + particle_side(p->volume[j]));
+        const double range = 0.5 * (c->spacing + fluid_particle_side(p->volume[j]));
         if (r2 < range * range) {
             /* 004 Eq. 21 as a force density on I: rho_I a_IJ, along x_I - x_J = -xij. */
             const double push = p->density[i] *

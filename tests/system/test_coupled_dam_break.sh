@@ -18,7 +18,7 @@ PY=/usr/bin/python3
 "$FSI_RUN" "$FSI_SOURCE_DIR/cases/c1_elastic_plate.ini" --out c1 --threads 1 \
   --set run.end_time=0.25 >c1.txt 2>&1 || { cat c1.txt; tail -5 c1/*.log; fail "C1 coupled run failed"; }
 
-grep -q "fluid particles inside the solid (closer than half a spacing to a solid particle): at most 0 at once, in 0 windows" \
+grep -q "fluid particles inside the solid (closer than half the solid's spacing to a solid particle): at most 0 at once, in 0 windows" \
   c1/fluid.log || { grep interface c1/fluid.log; fail "fluid particles entered the plate"; }
 pass "no fluid particle inside the plate in any window"
 

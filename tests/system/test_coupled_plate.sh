@@ -26,7 +26,7 @@ PY=/usr/bin/python3
   --set fluid.spacing=0.0125 --set solid.spacing=0.0125 --set run.end_time=0.1 \
   >c4.txt 2>&1 || { cat c4.txt; tail -5 c4/*.log; fail "C4 coupled run failed"; }
 
-grep -q "fluid particles inside the solid (closer than half a spacing to a solid particle): at most 0 at once, in 0 windows" \
+grep -q "fluid particles inside the solid (closer than half the solid's spacing to a solid particle): at most 0 at once, in 0 windows" \
   c4/fluid.log || { grep interface c4/fluid.log; fail "fluid particles entered the solid"; }
 pass "no fluid particle inside the solid in any window"
 
