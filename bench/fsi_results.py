@@ -112,9 +112,9 @@ def wall_boxes(case):
 def fluid_in_walls(boxes, frame):
     """How many fluid particles of a fluid.h5 frame group are inside wall_boxes."""
     import numpy as np
-    x = frame["position"][()][:, :len(boxes[0][0])] if boxes else None
-    if x is None:
+    if not boxes:
         return 0
+    x = frame["position"][()][:, :len(boxes[0][0])]
     fluid = (frame["flags"][()].ravel() & 1) > 0
     inside = np.zeros(len(x), dtype=bool)
     for lo, hi in boxes:

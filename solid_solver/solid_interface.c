@@ -2,11 +2,12 @@
 #include "solid_interface.h"
 
 #include <math.h>
-
-#include "neighbour_grid.h"
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+
+#include "neighbour_grid.h"
+#include "ulph_kernel.h"
 
 int solid_interface_init(solid_interface_buffers *b, int n_particles)
 {
@@ -47,10 +48,6 @@ void solid_interface_free(solid_interface_buffers *b)
     memset(b, 0, sizeof *b);
 }
 
-/* 000 Eq. 17's kernel: h = 1.2 dx, support 3 h (the ULPH defaults, fluid_solver/ulph). */
-#define ULPH_SMOOTHING_FACTOR 1.2
-#define ULPH_SUPPORT_FACTOR 3.0
-
 double solid_interface_fluid_reach(const fsi_case *c, double *fluid_spacing)
 {
     const double dx_f = fsi_case_get_real(c, "fluid", "spacing", 0.0);
@@ -60,8 +57,8 @@ double solid_interface_fluid_reach(const fsi_case *c, double *fluid_spacing)
     if (!(dx_f > 0.0) || !solver || strcmp(solver, "ulph") != 0)
         return 0.0;
     const double support =
-        fsi_case_get_real(c, "fluid", "smoothing_factor", ULPH_SMOOTHING_FACTOR) *
-        fsi_case_get_real(c, "fluid", "support_factor", ULPH_SUPPORT_FACTOR) * dx_f;
+        fsi_case_get_real(c, "fluid", "smoothing_factor", ULPH_KERNEL_H_OVER_DX) *
+        fsi_case_get_real(c, "fluid", "support_factor", ULPH_KERNEL_SUPPORT_FACTOR) * dx_f;
     return support - 0.5 * dx_f;
 }
 

@@ -59,8 +59,8 @@ double solid_interface_depth(const fsi_case *c);
  * runs out. Once, at start-up: the band is fixed to the reference configuration. */
 int solid_interface_band(solid_interface_buffers *b, const solid_particles *p, double depth);
 
-/* Copies the particles with b->surface[i] or b->band[i] set into b->state at the start of a window
- * that follows one of length dt_last (0 for the first); returns its n.
+/* Copies the particles with b->surface[i] or b->band[i] set into b->state at the start
+ * of a window that follows one of length dt_last (0 for the first); returns its n.
  *
  * Position is the particle's. Velocity and acceleration are the means over the
  * windows that ended now, not the instants: the fluid samples the solid once per
@@ -94,14 +94,15 @@ int solid_interface_take(solid_interface_buffers *b, const fsi_interface *in,
  *     F(t) = F_k - z A (v(t) - u),
  * on every particle that carries a non-zero load, with A = dx^(dim-1) (dx / dx_f): the
  * face one particle presents, times its layer's share of a fluid spacing (dx_f =
- * b->fluid_spacing, 1 when 0). The fluid's load spreads over the layers within its
- * reach, about 3.6 dx_f deep: at equal spacings 3-4 layers each with the face's z A,
- * and with a finer solid each of its more, thinner layers gets its share, so that
- * the correction stays the same multiple of z whatever the solid's spacing. Without it the held load lags the solid's motion by up to a window, and
- * every mode that turns by more than a quarter period within a window is pumped
- * (the load works against the velocity one window late): a plate's short bending
- * waves grew without bound. The term vanishes when the solid follows u, i.e. as the
- * window shrinks, and only ever removes energy. damping[i] = z A / m_i [1/s] (0 for
+ * b->fluid_spacing; the factor is 1 when that is 0). The fluid's load spreads over the
+ * layers within its reach, about 3.6 dx_f deep: at equal spacings 3-4 layers each with
+ * the face's z A, and with a finer solid each of its more, thinner layers gets its share,
+ * so that the correction stays the same multiple of z whatever the solid's spacing.
+ * Without it the held load lags the solid's motion by up to a window, and every mode that
+ * turns by more than a quarter period within a window is pumped (the load works against
+ * the velocity one window late): a plate's short bending waves grew without bound. The
+ * term vanishes when the solid follows u, i.e. as the window shrinks, and only ever
+ * removes energy. damping[i] = z A / m_i [1/s] (0 for
  * particles without a load); the integrator treats -c v implicitly and the main loop
  * adds m c u to the external force. */
 void solid_interface_damping(const solid_interface_buffers *b, const solid_particles *p,

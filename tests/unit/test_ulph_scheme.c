@@ -361,10 +361,10 @@ static void test_continuity(void)
 
 /* The wall contact of 004 Eqs. 21-24 (ulph_contact.h): the printed value at half a
  * spacing (h = 1.2 dx: eta = 0.56, f = 2/3, zeta = 1/2) and the same magnitude closer
- * in (held), nothing at and beyond a spacing, repulsive inside it, and continuous where f changes branch (eta = 2/3, 1, 2,
- * the last reached with h = 0.5 dx): a jump there would be an impulse to the particle
- * crossing it. Continuity is checked as |F(r + e) - F(r - e)| against the largest
- * slope times 2e, with e = 1e-9 dx. */
+ * in (held), nothing at and beyond a spacing, repulsive inside it, and continuous
+ * where f changes branch (eta = 2/3, 1, 2, the last reached with h = 0.5 dx): a jump
+ * there would be an impulse to the particle crossing it. Continuity is checked as
+ * |F(r + e) - F(r - e)| against the largest slope times 2e, with e = 1e-9 dx. */
 static void test_contact(void)
 {
     const double dx = 0.004, c0 = 30.0, k_c2 = 0.01 * c0 * c0;
