@@ -24,6 +24,8 @@ static solid_region_action action_of(const char *word)
         return SOLID_REGION_LOAD;
     if (word && strcmp(word, "remove") == 0)
         return SOLID_REGION_REMOVE;
+    if (word && strcmp(word, "no_failure") == 0)
+        return SOLID_REGION_NO_FAILURE;
     return SOLID_REGION_CLAMP;
 }
 
@@ -311,7 +313,9 @@ int solid_geometry_build(const solid_geometry *g, double density, solid_particle
                 if (reg->action == SOLID_REGION_REMOVE ||
                     !solid_region_contains(reg, g->spacing, x))
                     continue;
-                p->flags[i] |= reg->action == SOLID_REGION_CLAMP ? SOLID_CLAMPED : SOLID_LOADED;
+                p->flags[i] |= reg->action == SOLID_REGION_CLAMP  ? SOLID_CLAMPED
+                               : reg->action == SOLID_REGION_LOAD ? SOLID_LOADED
+                                                                  : SOLID_UNBREAKABLE;
             }
             i++;
         }

@@ -33,7 +33,12 @@
  * spacings". */
 #define SOLID_GEOMETRY_TOL 1e-6
 
-typedef enum { SOLID_REGION_CLAMP, SOLID_REGION_LOAD, SOLID_REGION_REMOVE } solid_region_action;
+typedef enum {
+    SOLID_REGION_CLAMP,
+    SOLID_REGION_LOAD,
+    SOLID_REGION_REMOVE,
+    SOLID_REGION_NO_FAILURE
+} solid_region_action;
 
 typedef struct {
     const char *section;        /* "solid.block NAME" (owned by the case) */

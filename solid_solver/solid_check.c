@@ -70,7 +70,7 @@ static void check_blocks(fsi_case_checker *k, const solid_geometry *g)
 
 static void check_regions(fsi_case_checker *k, const solid_geometry *g)
 {
-    static const char *const action_word[] = {"clamp", "load", "remove"};
+    static const char *const action_word[] = {"clamp", "load", "remove", "no_failure"};
     for (int r = 0; r < g->n_regions; r++) {
         const solid_region *reg = &g->regions[r];
         for (int d = 0; d < FSI_DIM; d++)

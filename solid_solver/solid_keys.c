@@ -81,9 +81,11 @@ static const fsi_key_spec region_keys[] = {
      "Lower corner of the box; a point belongs to the region when it lies in the closed "
      "box (within 1e-6 spacings)."},
     {"max", FSI_KEY_VECTOR, "m", NULL, 0, 0, 0, NULL, "Upper corner of the box."},
-    {"action", FSI_KEY_CHOICE, "-", NULL, 0, 0, 0, "clamp|load|remove",
+    {"action", FSI_KEY_CHOICE, "-", NULL, 0, 0, 0, "clamp|load|remove|no_failure",
      "clamp: the points keep x = x0 and v = a = 0; load: the points share 'force'; remove: "
-     "no points are created there (notches, holes), before clamp and load regions select."},
+     "no points are created there (notches, holes), before the other regions select; "
+     "no_failure: no bond with an end point in the box breaks (a zone next to a clamp "
+     "whose corner is an idealised singularity, docs/nosbpd.md)."},
     {"force", FSI_KEY_VECTOR, "N", ZERO_VECTOR, 0, 0, 0, NULL,
      "Total force of a load region (per unit thickness in 2D), spread equally over its "
      "points; required with action = load."},
@@ -101,7 +103,7 @@ static const fsi_key_spec region_keys[] = {
 };
 
 const fsi_key_table fsi_solid_region_keys = {
-    "solid.region", "A box that clamps, loads or removes the lattice points inside it.",
+    "solid.region", "A box that clamps, loads, removes or keeps from breaking the lattice points in it.",
     region_keys, (int)(sizeof region_keys / sizeof region_keys[0])};
 
 static const fsi_key_spec probe_keys[] = {

@@ -211,11 +211,14 @@ static int setup(solid_run *s, fsi_participant *part)
         return -1;
     }
 
-    int clamped = 0, loaded = 0;
+    int clamped = 0, loaded = 0, unbreakable = 0;
     for (int i = 0; i < p->n; i++) {
         clamped += (p->flags[i] & SOLID_CLAMPED) != 0;
         loaded += (p->flags[i] & SOLID_LOADED) != 0;
+        unbreakable += (p->flags[i] & SOLID_UNBREAKABLE) != 0;
     }
+    if (unbreakable)
+        fsi_info("%d particles in no_failure regions: their bonds do not break", unbreakable);
     fsi_info("%d particles (%d blocks, %d clamped, %d loaded), spacing %g m, mass %g, "
              "stable step %g s (sub-step %g s), c0 = sqrt(K/rho) = %g m/s",
              p->n, s->geometry.n_blocks, clamped, loaded, p->spacing, mass, stable,

@@ -16,6 +16,9 @@ enum {
      * mass, no strain energy, no force state; it only shows the body's families the
      * displacement field continued past the clamp (docs/nosbpd.md, "Clamps"). */
     SOLID_MIRRORED = 4,
+    /* In a no_failure region: no bond with an end here breaks (docs/nosbpd.md,
+     * "No-failure zones"). */
+    SOLID_UNBREAKABLE = 8,
 };
 
 typedef struct {

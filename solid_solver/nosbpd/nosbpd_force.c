@@ -88,7 +88,7 @@ static int update_point(solid_model *m, const solid_particles *p, const double *
             y1[d] = x[(int64_t)j * FSI_DIM + d] - xi_pos[d];
             y0[d] = x_prev[(int64_t)j * FSI_DIM + d] - xp_pos[d];
         }
-        if (failure) {
+        if (failure && !((p->flags[i] | p->flags[j]) & SOLID_UNBREAKABLE)) {
             /* Eq. 47, s = (|y| - |xi|) / |xi| > s0, as |y|^2 > (1 + s0)^2 |xi|^2. */
             const double len = b->length[q];
             if (fsi_vec_dot(y1, y1) > crit2 * (len * len)) {

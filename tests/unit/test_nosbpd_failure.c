@@ -8,6 +8,8 @@
  *    flagged and counted, and carries no stress;
  *  - crack faces become surface points;
  *  - a [solid.crack] breaks exactly the bonds that cross it, with failure off too;
+ *  - no bond with an end point in a no_failure region (SOLID_UNBREAKABLE) breaks,
+ *    and the others break as without the region;
  *  - s0 from the fracture energy (the 2D forms of nosbpd_failure.h), and
  *    critical_stretch winning over fracture_energy; failure without either is an
  *    error. */
@@ -159,6 +161,48 @@ static void check_breaking(void)
     CHECK(test_force(m, p, x_prev, force) == 0, "moving fragments failed");
     CHECK(all_finite(force, p->n * FSI_DIM), "non-finite forces on moving fragments");
 
+    free(x_prev);
+    free(force);
+    solid_model_free(m);
+    test_lattice_free(p);
+}
+
+/* The stretch of check_breaking with the left third of the block unbreakable: the
+ * bonds that would break and touch it stay, all others break as before. */
+static void check_no_failure_region(void)
+{
+    const double s0 = 0.01, e = 0.0125;
+    solid_particles *p = test_lattice(30, 8, 5, 0.01, 1000.0);
+    int unbreakable = 0;
+    for (int i = 0; i < p->n; i++)
+        if (p->x0[i * FSI_DIM] < 0.095) {
+            p->flags[i] |= SOLID_UNBREAKABLE;
+            unbreakable++;
+        }
+    char text[512];
+    snprintf(text, sizeof text, "%sfailure = true\ncritical_stretch = %g\n", CASE_BASE, s0);
+    solid_model *m = test_model(text, p);
+    const nosbpd_bonds *b = nosbpd_model_bonds(m);
+    double *x_prev = malloc((size_t)p->n * FSI_DIM * sizeof *x_prev);
+    double *force = malloc((size_t)p->n * FSI_DIM * sizeof *force);
+    stretch_to(p, e, x_prev);
+    CHECK(test_force(m, p, x_prev, force) == 0, "stretch %g failed", e);
+    int64_t kept = 0, broken = 0, wrong = 0;
+    for (int i = 0; i < p->n; i++)
+        for (int64_t q = b->offset[i]; q < b->offset[i + 1]; q++) {
+            const int j = b->neighbour[q];
+            const int protected = ((p->flags[i] | p->flags[j]) & SOLID_UNBREAKABLE) != 0;
+            const int over = analytic_stretch(b->xi + q * FSI_DIM, e) > s0;
+            kept += over && protected;
+            broken += over && !protected;
+            wrong += (over && !protected) == b->intact[q];
+        }
+    CHECK(unbreakable > 0 && unbreakable < p->n, "%d unbreakable points", unbreakable);
+    CHECK(kept > 0 && broken > 0, "%ld bonds over s0 kept, %ld broken: the region should "
+          "split them", (long)kept, (long)broken);
+    CHECK(wrong == 0, "%ld bonds in the wrong state with a no_failure region", (long)wrong);
+    CHECK(nosbpd_broken_bond_count(m) == broken, "%ld broken, %ld expected",
+          (long)nosbpd_broken_bond_count(m), (long)broken);
     free(x_prev);
     free(force);
     solid_model_free(m);
@@ -327,6 +371,7 @@ static void check_precrack(void)
 int main(void)
 {
     check_breaking();
+    check_no_failure_region();
     check_crack_surface();
     check_precrack();
     check_critical_stretch();

@@ -210,7 +210,7 @@ static void test_regions(void)
 {
     const double dx = 0.01;
     solid_block b = test_block("solid.block beam", 0.0, 1.0, 0.0, 0.2, dx);
-    solid_region r[4] = {
+    solid_region r[5] = {
         /* a notch: two columns (x = 0.495, 0.505), five rows (y < 0.05) */
         test_region("solid.region notch", SOLID_REGION_REMOVE, 0.49, 0.51, 0.0, 0.05),
         /* clamp: the two leftmost columns; its face x = 0.02 lies between points */
@@ -219,23 +219,32 @@ static void test_regions(void)
         test_region("solid.region tip", SOLID_REGION_LOAD, 0.99, 1.0, 0.0, 0.2),
         /* a load box drawn exactly through a column of points: closed box selects it */
         test_region("solid.region line", SOLID_REGION_LOAD, 0.505, 0.505, 0.0, 0.2),
+        /* no failure: five columns, x = 0.905 .. 0.945 */
+        test_region("solid.region keep", SOLID_REGION_NO_FAILURE, 0.9, 0.95, -1.0, 1.0),
     };
     r[2].force[1] = -100.0;
     r[2].ramp_time = 0.5;
     r[3].force[0] = 30.0;
-    solid_geometry g = {.spacing = dx, .n_blocks = 1, .n_regions = 4, .blocks = &b, .regions = r};
+    solid_geometry g = {.spacing = dx, .n_blocks = 1, .n_regions = 5, .blocks = &b, .regions = r};
     solid_particles p;
     char msg[256];
     CHECK(solid_geometry_build(&g, 1000.0, &p, NULL, msg, sizeof msg) == 0, "build: %s", msg);
     CHECK(p.n == (2000 - 10) * LAYERS, "notched beam has %d points, want %d", p.n,
           (2000 - 10) * LAYERS);
-    int in_notch = 0, clamped = 0, loaded = 0, ids_ok = 1;
+    int in_notch = 0, clamped = 0, loaded = 0, unbreakable = 0, only_unbreakable = 1, ids_ok = 1;
     for (int i = 0; i < p.n; i++) {
         in_notch += solid_region_contains(&r[0], dx, &p.x0[i * FSI_DIM]);
         clamped += (p.flags[i] & SOLID_CLAMPED) != 0;
         loaded += (p.flags[i] & SOLID_LOADED) != 0;
+        if (p.flags[i] & SOLID_UNBREAKABLE) {
+            unbreakable++;
+            only_unbreakable &= p.flags[i] == SOLID_UNBREAKABLE;
+        }
         ids_ok &= p.id[i] == i;
     }
+    CHECK(unbreakable == 100 * LAYERS && only_unbreakable,
+          "%d unbreakable points (want %d), %s", unbreakable, 100 * LAYERS,
+          only_unbreakable ? "none also clamped or loaded" : "some also clamped or loaded");
     CHECK(in_notch == 0, "%d points created inside the removed notch", in_notch);
     CHECK(ids_ok, "ids are not the indices 0..n-1");
     CHECK(clamped == 40 * LAYERS, "%d clamped, want %d", clamped, 40 * LAYERS);
