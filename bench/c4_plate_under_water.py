@@ -6,6 +6,7 @@ plate theory, and the settled value (mean over the second half of the run).
 import argparse
 import os
 
+import fe_clamped_plate
 import fsi_results
 
 
@@ -13,28 +14,24 @@ def vec(text):
     return [float(v) for v in text.split(",")]
 
 
-def plate_theory(case):
-    """003 Eq. 53 from the case's own numbers: the clamped-clamped plate under the water
-    column's and its own weight, plane strain."""
+def references(case):
+    """From the case's own numbers: plate theory (003 Eq. 53), the same with a Timoshenko
+    beam's shear deflection, and the 2D plane-strain finite-element answer with fully
+    clamped ends (bench/fe_clamped_plate.py), the elastic problem the PD solid solves."""
     s, f = case["solid"], case["fluid"]
     plate, water = case["solid.block plate"], case["fluid.block water"]
     p0, p1 = vec(plate["min"]), vec(plate["max"])
     w0, w1 = vec(water["min"]), vec(water["max"])
-    L, T, H = p1[0] - p0[0], p1[1] - p0[1], w1[1] - w0[1]
-    E, nu = float(s["youngs_modulus"]), float(s["poisson_ratio"])
-    g = abs(vec(s["gravity"])[1])
-    rho_s, rho_w = float(s["density"]), float(f["density"])
-    q = g * (rho_w * H + rho_s * T)
-    bending = 12 * (1 - nu ** 2) * q * L ** 4 / (384 * E * T ** 3)
-    # Timoshenko: the shear of a built-in beam under a uniform load adds q L^2 / (8 k G A)
-    # at mid-span (k = 5/6, A = T per unit width): 3.6 % here, T / L = 1 / 20.
-    shear = q * L ** 2 / (8 * (5.0 / 6.0) * E / (2 * (1 + nu)) * T)
-    return bending, bending + shear, T
+    numbers = dict(L=p1[0] - p0[0], T=p1[1] - p0[1], E=float(s["youngs_modulus"]),
+                   nu=float(s["poisson_ratio"]), rho_s=float(s["density"]),
+                   rho_w=float(f["density"]), H=w1[1] - w0[1], g=abs(vec(s["gravity"])[1]))
+    bending, with_shear = fe_clamped_plate.plate_formulas(**numbers)
+    return bending, with_shear, fe_clamped_plate.midspan_deflection(**numbers), numbers["T"]
 
 
 def summary(run):
     case = fsi_results.read_case(run)
-    delta, delta_shear, T = plate_theory(case)
+    delta, delta_shear, delta_fe, T = references(case)
     dx = float(case["solid"]["spacing"])
     pr = fsi_results.read_probes(run)
     t, uy = pr["time"], pr["mid_uy"]
@@ -47,7 +44,7 @@ def summary(run):
     n_solid = fsi_results.log_match(os.path.join(run, "solid.log"), r"\] (\d+) particles")
     wall = fsi_results.wall_time(run)
     return dict(run=run, T_over_dx=T / dx, dx=dx, delta=delta, delta_shear=delta_shear,
-                settled=settled,
+                delta_fe=delta_fe, settled=settled,
                 swing=(max(late) - min(late)) / 2 if late else float("nan"), t=t, uy=uy,
                 t_end=t_end, windows=windows, substeps=substeps, n_fluid=n_fluid,
                 n_solid=n_solid, wall=wall, finished=wall is not None)
@@ -62,24 +59,27 @@ def main():
     rows = [summary(r) for r in a.runs if os.path.exists(os.path.join(r, "probes.csv"))]
     with open(a.md, "w") as md:
         md.write("| T / dx | dx | fluid / solid particles | end | windows | solid sub-steps per "
-                 "window | settled deflection | error (plate theory) | error (with shear) | swing (half "
-                 "range) | wall time |\n")
-        md.write("| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |\n")
+                 "window | settled deflection | error (plate theory) | error (with shear) | error (2D "
+                 "elasticity) | swing (half range) | wall time |\n")
+        md.write("| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |\n")
         for r in rows:
             per = (int(r["substeps"]) / int(r["windows"])
                    if r["substeps"] and r["windows"] else float("nan"))
             md.write("| %.0f | %.4g m | %s / %s | %s | %s | %.1f | %.2f um | %+.2f %% | %+.2f %% "
-                     "| %.2f um | %s |\n" % (r["T_over_dx"], r["dx"], r["n_fluid"], r["n_solid"],
+                     "| %+.2f %% | %.2f um | %s |\n" % (r["T_over_dx"], r["dx"], r["n_fluid"], r["n_solid"],
                                    "t = %.3g s" % r["t_end"] if r["finished"]
                                    else "stopped at t = %.3g s" % r["t_end"],
                                    r["windows"] or "?", per, 1e6 * r["settled"],
                                    100 * (r["settled"] / r["delta"] - 1),
-                                   100 * (r["settled"] / r["delta_shear"] - 1), 1e6 * r["swing"],
+                                   100 * (r["settled"] / r["delta_shear"] - 1),
+                                   100 * (r["settled"] / r["delta_fe"] - 1), 1e6 * r["swing"],
                                    "%.1f s" % r["wall"] if r["wall"] else "?"))
         if rows:
             md.write("\nPlate theory (003 Eq. 53): %.2f um; with the shear deflection of a "
-                     "Timoshenko beam: %.2f um; settled = mean of -u_y over the second half of "
-                     "the run.\n" % (1e6 * rows[0]["delta"], 1e6 * rows[0]["delta_shear"]))
+                     "Timoshenko beam: %.2f um; 2D plane-strain elasticity with fully clamped "
+                     "ends (finite elements): %.2f um; settled = mean of -u_y over the second "
+                     "half of the run.\n" % (1e6 * rows[0]["delta"], 1e6 * rows[0]["delta_shear"],
+                                             1e6 * rows[0]["delta_fe"]))
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
@@ -92,6 +92,8 @@ def main():
                    label="plate theory %.1f um" % (1e6 * rows[0]["delta"]))
         ax.axhline(1e6 * rows[0]["delta_shear"], color="k", ls=":",
                    label="with shear (Timoshenko) %.1f um" % (1e6 * rows[0]["delta_shear"]))
+        ax.axhline(1e6 * rows[0]["delta_fe"], color="C3", ls="-.",
+                   label="2D elasticity (finite elements) %.1f um" % (1e6 * rows[0]["delta_fe"]))
     ax.set_xlabel("t [s]")
     ax.set_ylabel("mid-span deflection -u_y [um]")
     ax.set_title("C4 water column on an aluminium plate (ULPH + NOSB-PD)")
