@@ -88,11 +88,15 @@ def main():
     ap.add_argument("--ylim", type=pair, default=(-0.015, 0.15))
     ap.add_argument("--pmax", type=float, default=4000.0)
     ap.add_argument("--title", default="C5 dam break against a Drucker-Prager baffle (ULPH + NOSB-PD)")
+    ap.add_argument("--also", action="append", default=[], metavar="LABEL=RUN_DIR",
+                    help="a further run, a row of the table and of the plot")
     ap.add_argument("with_failure")
     ap.add_argument("without_failure")
     a = ap.parse_args()
+    runs = [("failure = true", a.with_failure), ("failure = false", a.without_failure)]
+    runs += [tuple(extra.rsplit("=", 1)) for extra in a.also]
     rows = []
-    for label, run in (("failure = true", a.with_failure), ("failure = false", a.without_failure)):
+    for label, run in runs:
         x0, body, growth = damage_growth(run + "/solid.h5")
         t0, where = initiation(growth, x0, a.threshold)
         t_end, last = growth[-1]
@@ -111,10 +115,10 @@ def main():
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-    fig, axes = plt.subplots(2, len(a.times), figsize=(3.0 * len(a.times), 5.6), squeeze=False,
-                             constrained_layout=True)
-    for row, run in enumerate((a.with_failure, a.without_failure)):
-        a.label = "failure" if row == 0 else "no failure"
+    fig, axes = plt.subplots(len(runs), len(a.times), figsize=(3.0 * len(a.times), 2.8 * len(runs)),
+                             squeeze=False, constrained_layout=True)
+    for row, (label, run) in enumerate(runs):
+        a.label = ("failure", "no failure")[row] if row < 2 else label
         for col, t in enumerate(a.times):
             ax = axes[row][col]
             sc, d = snapshot(ax, run, t, a)
