@@ -1,5 +1,6 @@
 /* The solid's geometry from the case: blocks filled with a regular lattice, regions
- * that clamp, load or remove points, probe points; and the particles built from
+ * that clamp, load, remove or keep from breaking points, probe points; and the
+ * particles built from
  * them (solid_particles.h).
  *
  * Lattice: a block [min, max] holds the points min + (i + 1/2) dx, i = 0 .. n_d - 1
@@ -14,7 +15,8 @@
  * Regions: a point belongs to a region when it lies in the closed box
  * [min - tol, max + tol], tol = 1e-6 dx (so a box drawn on the lattice's faces
  * selects the points inside it, immune to round-off). Points in a 'remove' region are
- * never created; 'clamp' and 'load' regions then select among the points that exist.
+ * never created; 'clamp', 'load' and 'no_failure' regions then select among the
+ * points that exist.
  *
  * Ownership: a solid_geometry points into the case (section names) and owns its
  * arrays (solid_geometry_free); solid_particles arrays are owned by whoever built
