@@ -1,7 +1,6 @@
 /* The solid's geometry from the case: blocks filled with a regular lattice, regions
  * that clamp, load, remove or keep from breaking points, probe points; and the
- * particles built from
- * them (solid_particles.h).
+ * particles built from them (solid_particles.h).
  *
  * Lattice: a block [min, max] holds the points min + (i + 1/2) dx, i = 0 .. n_d - 1
  * along each axis d, with n_d = (max_d - min_d) / dx (a whole number, checked by
