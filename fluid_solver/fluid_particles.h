@@ -52,7 +52,6 @@ typedef struct {
     uint8_t *flags;         /* FLUID_PARTICLE_* */
 } fluid_particles;
 
-/* Frees the arrays and leaves p empty (n = 0, pointers NULL). */
 /* The spacing of a lattice whose cells have this volume, V^(1/DIM): the own spacing of
  * a wall or solid particle, whose volume is fixed (a solid may be finer than the fluid). */
 static inline double fluid_particle_side(double volume)
@@ -64,6 +63,7 @@ static inline double fluid_particle_side(double volume)
 #endif
 }
 
+/* Frees the arrays and leaves p empty (n = 0, pointers NULL). */
 static inline void fluid_particles_free(fluid_particles *p)
 {
     free(p->id);

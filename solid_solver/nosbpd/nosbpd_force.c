@@ -71,7 +71,8 @@ static int update_point(solid_model *m, const solid_particles *p, const double *
     const double *restrict weight = b->weight;
     const int32_t *restrict nb_index = b->neighbour;
     uint8_t *restrict intact = b->intact;
-    const int failure = m->failure;
+    /* A point of a no_failure region keeps all its bonds; others keep those to one. */
+    const int failure = m->failure && !(p->flags[i] & SOLID_UNBREAKABLE);
     const double crit2 = (1.0 + m->critical_stretch) * (1.0 + m->critical_stretch);
 
     const int nb = m->n_basis;
@@ -88,7 +89,7 @@ static int update_point(solid_model *m, const solid_particles *p, const double *
             y1[d] = x[(int64_t)j * FSI_DIM + d] - xi_pos[d];
             y0[d] = x_prev[(int64_t)j * FSI_DIM + d] - xp_pos[d];
         }
-        if (failure && !((p->flags[i] | p->flags[j]) & SOLID_UNBREAKABLE)) {
+        if (failure && !(p->flags[j] & SOLID_UNBREAKABLE)) {
             /* Eq. 47, s = (|y| - |xi|) / |xi| > s0, as |y|^2 > (1 + s0)^2 |xi|^2. */
             const double len = b->length[q];
             if (fsi_vec_dot(y1, y1) > crit2 * (len * len)) {
