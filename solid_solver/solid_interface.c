@@ -6,6 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "lattice_ball.h"
 #include "neighbour_grid.h"
 #include "ulph_kernel.h"
 
@@ -68,26 +69,16 @@ double solid_interface_depth(const fsi_case *c)
     return given > 0.0 ? given : solid_interface_fluid_reach(c, NULL);
 }
 
-/* Lattice offsets (other than 0) of length <= r. */
+/* The neighbours within r an interior lattice point has. */
 static long lattice_count(double r, double dx)
 {
-    const int m = (int)floor(r / dx);
     long count = 0;
-    int idx[FSI_DIM];
-    for (int d = 0; d < FSI_DIM; d++)
-        idx[d] = -m;
-    for (;;) {
-        double len2 = 0.0;
-        for (int d = 0; d < FSI_DIM; d++)
-            len2 += (idx[d] * dx) * (idx[d] * dx);
-        count += len2 <= r * r;
-        int d = 0;
-        while (d < FSI_DIM && ++idx[d] > m)
-            idx[d++] = -m;
-        if (d == FSI_DIM)
-            break;
-    }
-    return count - 1;   /* the offset 0 */
+    fsi_lattice_ball ball;
+    double len;
+    fsi_lattice_ball_begin(&ball, r, dx);
+    while (fsi_lattice_ball_next(&ball, &len))
+        count++;
+    return count;
 }
 
 int solid_interface_band(solid_interface_buffers *b, const solid_particles *p, double depth)

@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "geometry.h"
+#include "lattice_ball.h"
 #include "neighbour_grid.h"
 
 double nosbpd_influence_value(nosbpd_influence kind, double r, double delta)
@@ -137,31 +138,14 @@ int64_t nosbpd_bonds_cut(nosbpd_bonds *b, const double *x0, const double *from,
 nosbpd_full_family nosbpd_full_family_of_lattice(double delta, double dx, nosbpd_influence kind)
 {
     nosbpd_full_family f = {0, 0.0, 0.0};
-    const double reach = delta + NOSBPD_HORIZON_TOLERANCE * dx;
-    const int m = (int)ceil(reach / dx);
     const double vol = pow(dx, FSI_DIM);
-    int idx[FSI_DIM];
-    for (int d = 0; d < FSI_DIM; d++)
-        idx[d] = -m;
-    for (;;) {
-        double len2 = 0.0;
-        int zero = 1;
-        for (int d = 0; d < FSI_DIM; d++) {
-            const double e = idx[d] * dx;
-            len2 += e * e;
-            zero &= idx[d] == 0;
-        }
-        const double len = sqrt(len2);
-        if (!zero && len <= reach) {
-            f.count++;
-            f.sum_volume_over_length += vol / len;
-            f.sum_weight += nosbpd_influence_value(kind, len, delta) * vol;
-        }
-        int d = 0;
-        while (d < FSI_DIM && ++idx[d] > m)
-            idx[d++] = -m;
-        if (d == FSI_DIM)
-            break;
+    fsi_lattice_ball ball;
+    double len;
+    fsi_lattice_ball_begin(&ball, delta + NOSBPD_HORIZON_TOLERANCE * dx, dx);
+    while (fsi_lattice_ball_next(&ball, &len)) {
+        f.count++;
+        f.sum_volume_over_length += vol / len;
+        f.sum_weight += nosbpd_influence_value(kind, len, delta) * vol;
     }
     return f;
 }
