@@ -12,7 +12,7 @@
 # Reduced case: dx = 1 mm instead of 0.5 mm (8 000 points instead of 31 600, and a
 # sub-step twice as long), the notch slot kept 4 spacings wide (|y| <= 2 mm; at 1 mm a
 # 2 mm slot would leave its two sides bonded across it, see the case file), end at
-# 150 us: measured, the crack reaches the far edge at 132 us at this spacing.
+# 150 us: measured, the crack reaches the far edge at 138 us at this spacing.
 # Frames every 1 us in the failure run: the crack runs at about 1 mm/us, so a frame
 # interval of one spacing's travel is what lets the first crack points be seen while the
 # crack is still within 2 spacings of the tip (with 5 us frames the crack is several
