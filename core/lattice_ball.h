@@ -1,15 +1,15 @@
-/* The offsets of a regular lattice (spacing dx) that lie within a radius r of a lattice
- * point, the point itself left out: the full neighbourhood an interior point has. The
- * solid uses it for the family every interior point shares (the model's normalising
- * sums) and for the interface band (points with fewer neighbours than this are near a
- * surface). Callers add a small tolerance to r, so lattice distances equal to the
- * radius up to round-off count as inside.
+/* The lengths of the offsets of a regular lattice (spacing dx) that lie within a radius
+ * r of a lattice point, the point itself left out: the full neighbourhood an interior
+ * point has. The solid uses it for the family every interior point shares (the model's
+ * normalising sums) and for the interface band (points with fewer neighbours than this
+ * are near a surface). Callers add a small tolerance to r, so lattice distances equal
+ * to the radius up to round-off count as inside.
  *
  *   fsi_lattice_ball ball;
  *   double len;
  *   fsi_lattice_ball_begin(&ball, r, dx);
  *   while (fsi_lattice_ball_next(&ball, &len))
- *       ... ball.offset[d] is the offset, len its length ...
+ *       ... one offset, of length len ...
  */
 #ifndef FSI_LATTICE_BALL_H
 #define FSI_LATTICE_BALL_H
@@ -19,7 +19,6 @@
 #include "dim.h"
 
 typedef struct {
-    double offset[FSI_DIM];     /* the current offset [m] */
     double dx, r2;
     int m;                      /* index range -m..m per axis */
     int idx[FSI_DIM];           /* the next offset to look at, in spacings */
@@ -43,8 +42,8 @@ static inline int fsi_lattice_ball_next(fsi_lattice_ball *b, double *length)
         double len2 = 0.0;
         int origin = 1;
         for (int d = 0; d < FSI_DIM; d++) {
-            b->offset[d] = b->idx[d] * b->dx;
-            len2 += b->offset[d] * b->offset[d];
+            const double e = b->idx[d] * b->dx;
+            len2 += e * e;
             origin &= b->idx[d] == 0;
         }
         int d = 0;
