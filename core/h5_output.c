@@ -1,5 +1,10 @@
 /* Particle output to HDF5 with an XDMF sidecar; layout and guarantees in
- * h5_output.h and docs/output.md. */
+ * h5_output.h and docs/output.md.
+ *
+ * Every HDF5 file is written under a temporary name, closed and then renamed into
+ * place, and never opened for writing again: a reader (h5py, h5dump, ParaView) can
+ * hold any published file for as long as it likes without blocking the writer or
+ * seeing a half-written object. */
 #include "h5_output.h"
 
 #include "dim.h"
@@ -7,11 +12,13 @@
 
 #include <hdf5.h>
 
+#include <dirent.h>
 #include <errno.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 /* One point field of a frame, remembered so the sidecar can be rewritten. */
 typedef struct {
@@ -30,19 +37,24 @@ typedef struct {
 } frame_rec;
 
 struct fsi_h5_writer {
-    char *h5_path;
-    const char *h5_base; /* points into h5_path: what the sidecar references */
-    char *xmf_path;
-    char *xmf_tmp;
-    hid_t file;  /* open only while a frame or a static write is in progress */
-    hid_t group; /* the open frame group */
+    char *dir;         /* the output folder */
+    char *name;        /* NAME: NAME.h5, NAME.xmf, NAME.frames/ */
+    char *solver;
+    char *frames_rel;  /* "NAME.frames": what the master and the sidecar reference */
+    char *frames_dir;  /* "DIR/NAME.frames" */
+    hid_t file;        /* the open frame's temporary file */
+    char *frame_path;  /* its final name, and the temporary it is written as */
+    char *frame_tmp;
     int in_frame;
-    int frame_failed; /* a write of the open frame failed: do not list it */
+    int frame_failed;  /* a write of the open frame failed: do not publish it */
+    int last_frame;    /* highest frame number begun, -1 before the first */
     frame_rec cur;
-    frame_rec *done; /* complete frames, in the order they were written */
+    frame_rec *done;   /* complete frames, in the order they were written */
     int ndone;
     int cap;
-    const int *order; /* point i of the caller's arrays is row order[i] (or NULL) */
+    int *vertex_counts; /* point counts whose vertex index file exists */
+    int nvertex;
+    const int *order;  /* point i of the caller's arrays is row order[i] (or NULL) */
     int order_n;
     unsigned char *scratch; /* rows in stored order */
     size_t scratch_bytes;
@@ -110,6 +122,76 @@ static int push_done(fsi_h5_writer *w)
     return 0;
 }
 
+/* ------------------------------------------------------- failure messages */
+
+typedef struct {
+    int err;
+    char desc[256];
+} h5_cause;
+
+/* The first failure since cause_reset(). HDF5 records the errno of a failed system
+ * call only in the text of its error stack ("..., errno = 28, error message = ...");
+ * the stack is cleared by the next API call (the cleanup after a failure), so it is
+ * read by the automatic error handler, which HDF5 calls as the failing API call
+ * returns. */
+static h5_cause first_cause;
+static int have_cause;
+
+static void cause_reset(void)
+{
+    have_cause = 0;
+    first_cause = (h5_cause){0, ""};
+}
+
+static herr_t find_cause(unsigned depth, const H5E_error2_t *e, void *data)
+{
+    h5_cause *c = data;
+    (void)depth; /* walked downward: the last description is the innermost cause */
+    if (e->desc)
+        snprintf(c->desc, sizeof c->desc, "%s: %s", e->func_name ? e->func_name : "",
+                 e->desc);
+    const char *p = e->desc ? strstr(e->desc, "errno = ") : NULL;
+    if (p && c->err == 0)
+        c->err = atoi(p + 8);
+    return 0;
+}
+
+static herr_t on_hdf5_error(hid_t stack, void *data)
+{
+    (void)data;
+    if (!have_cause) {
+        H5Ewalk2(stack, H5E_WALK_DOWNWARD, find_cause, &first_cause);
+        have_cause = 1;
+    }
+    return 0;
+}
+
+/* Why the last operation failed: the system's error text when there is one. */
+static void failure_reason(int saved_errno, char *out, size_t size)
+{
+    int err = have_cause && first_cause.err ? first_cause.err : saved_errno;
+    if (err)
+        snprintf(out, size, "%s", strerror(err));
+    else
+        snprintf(out, size, "HDF5: %s", have_cause ? first_cause.desc : "unknown error");
+    cause_reset();
+}
+
+static void report(const char *path, const char *what, ...) __attribute__((format(printf, 2, 3)));
+
+/* "h5 output: cannot write PATH (WHAT): REASON" */
+static void report(const char *path, const char *what, ...)
+{
+    int saved = errno;
+    char reason[300], detail[512];
+    failure_reason(saved, reason, sizeof reason);
+    va_list ap;
+    va_start(ap, what);
+    vsnprintf(detail, sizeof detail, what, ap);
+    va_end(ap);
+    fsi_error("h5 output: cannot write %s (%s): %s", path, detail, reason);
+}
+
 /* ------------------------------------------------------------- HDF5 pieces */
 
 /* Creation property list without modification times, so that two runs writing
@@ -124,6 +206,17 @@ static hid_t untimed_plist(hid_t cls)
         return -1;
     }
     return p;
+}
+
+static hid_t create_file(const char *path)
+{
+    errno = 0;
+    cause_reset();
+    hid_t fcpl = untimed_plist(H5P_FILE_CREATE);
+    hid_t f = fcpl >= 0 ? H5Fcreate(path, H5F_ACC_TRUNC, fcpl, H5P_DEFAULT) : -1;
+    if (fcpl >= 0)
+        H5Pclose(fcpl);
+    return f;
 }
 
 static hid_t create_group(hid_t loc, const char *name)
@@ -189,23 +282,6 @@ static int write_dataset(hid_t loc, const char *name, hid_t ftype, hid_t mtype,
     return rc;
 }
 
-static int write_root(hid_t file, const char *participant, const char *solver)
-{
-    int32_t dim = FSI_DIM;
-    if (write_attr_string(file, "participant", participant) < 0 ||
-        write_attr_string(file, "solver", solver) < 0 ||
-        write_attr(file, "dimension", H5T_STD_I32LE, H5T_NATIVE_INT32, &dim) < 0 ||
-        write_attr_string(file, "fsi_version", FSI_VERSION) < 0)
-        return -1;
-    hid_t s = create_group(file, "static");
-    hid_t f = create_group(file, "frames");
-    if (s >= 0)
-        H5Gclose(s);
-    if (f >= 0)
-        H5Gclose(f);
-    return (s >= 0 && f >= 0) ? 0 : -1;
-}
-
 static int write_frame_attrs(hid_t g, double time, long step, int frame)
 {
     int64_t step64 = step;
@@ -217,14 +293,179 @@ static int write_frame_attrs(hid_t g, double time, long step, int frame)
     return 0;
 }
 
-static void close_file(fsi_h5_writer *w)
+/* Closes a file written under the temporary name tmp and renames it to path; on any
+ * failure (rc < 0 on entry included) removes the temporary and leaves path as it was. */
+static int publish(hid_t file, int rc, const char *tmp, const char *path, const char *what)
 {
-    if (w->group >= 0)
-        H5Gclose(w->group);
-    w->group = -1;
-    if (w->file >= 0)
-        H5Fclose(w->file);
-    w->file = -1;
+    if (rc < 0)
+        report(tmp, "%s", what);
+    errno = 0;
+    if (H5Fclose(file) < 0 && rc == 0) {
+        report(tmp, "%s, closing", what);
+        rc = -1;
+    }
+    if (rc == 0 && rename(tmp, path) != 0) {
+        fsi_error("h5 output: cannot rename %s to %s: %s", tmp, path, strerror(errno));
+        rc = -1;
+    }
+    if (rc < 0)
+        remove(tmp);
+    return rc;
+}
+
+static char *frame_file_name(const fsi_h5_writer *w, int frame, const char *suffix)
+{
+    return str_printf("%s/%06d.h5%s", w->frames_dir, frame, suffix);
+}
+
+/* ---------------------------------------------------------- master file */
+
+static int write_master_contents(const fsi_h5_writer *w, hid_t file)
+{
+    int32_t dim = FSI_DIM;
+    if (write_attr_string(file, "participant", w->name) < 0 ||
+        write_attr_string(file, "solver", w->solver) < 0 ||
+        write_attr(file, "dimension", H5T_STD_I32LE, H5T_NATIVE_INT32, &dim) < 0 ||
+        write_attr_string(file, "fsi_version", FSI_VERSION) < 0)
+        return -1;
+    char target[64];
+    char *static_rel = str_printf("%s/static.h5", w->frames_rel);
+    int rc = static_rel && H5Lcreate_external(static_rel, "/", file, "static", H5P_DEFAULT,
+                                              H5P_DEFAULT) >= 0 ? 0 : -1;
+    free(static_rel);
+    hid_t frames = rc == 0 ? create_group(file, "frames") : -1;
+    if (frames < 0)
+        return -1;
+    for (int i = 0; i < w->ndone && rc == 0; i++) {
+        char *rel = str_printf("%s/%06d.h5", w->frames_rel, w->done[i].frame);
+        snprintf(target, sizeof target, "%06d", w->done[i].frame);
+        if (!rel || H5Lcreate_external(rel, "/", frames, target, H5P_DEFAULT, H5P_DEFAULT) < 0)
+            rc = -1;
+        free(rel);
+    }
+    H5Gclose(frames);
+    return rc;
+}
+
+/* NAME.h5: root attributes and external links to the static file and to every complete
+ * frame, rewritten whole after each frame (links only, so it stays small). */
+static int write_master(const fsi_h5_writer *w)
+{
+    char *path = str_printf("%s/%s.h5", w->dir, w->name);
+    char *tmp = str_printf("%s/%s.h5.tmp", w->dir, w->name);
+    int rc = -1;
+    if (path && tmp) {
+        hid_t file = create_file(tmp);
+        if (file < 0)
+            report(tmp, "master file");
+        else
+            rc = publish(file, write_master_contents(w, file), tmp, path, "master file");
+    }
+    free(path);
+    free(tmp);
+    return rc;
+}
+
+/* ------------------------------------------------------------ static file */
+
+typedef struct {
+    hid_t dst;
+    const char *skip; /* a field being replaced is not copied */
+    int rc;
+    int found;
+} copy_state;
+
+static herr_t copy_one(hid_t src, const char *name, const H5L_info_t *info, void *data)
+{
+    (void)info;
+    copy_state *s = data;
+    if (s->skip && strcmp(name, s->skip) == 0) {
+        s->found = 1;
+        return 0;
+    }
+    if (H5Ocopy(src, name, s->dst, name, H5P_DEFAULT, H5P_DEFAULT) < 0) {
+        s->rc = -1;
+        return -1;
+    }
+    return 0;
+}
+
+/* NAME.frames/static.h5 holding the fields of the current one plus 'field' (NULL:
+ * none), written as a new file: the published one is never modified. */
+static int write_static_file(fsi_h5_writer *w, const char *field, hid_t ftype, hid_t mtype,
+                             const void *data, int n, int ncomp)
+{
+    char *path = str_printf("%s/static.h5", w->frames_dir);
+    char *tmp = str_printf("%s/static.h5.tmp", w->frames_dir);
+    int rc = -1;
+    if (!path || !tmp)
+        goto out;
+    hid_t file = create_file(tmp);
+    if (file < 0) {
+        report(tmp, "static data");
+        goto out;
+    }
+    rc = 0;
+    if (field) {
+        hid_t old = H5Fopen(path, H5F_ACC_RDONLY, H5P_DEFAULT);
+        copy_state s = {file, field, 0, 0};
+        if (old < 0 || H5Literate(old, H5_INDEX_NAME, H5_ITER_INC, NULL, copy_one, &s) < 0 ||
+            s.rc < 0)
+            rc = -1;
+        if (old >= 0)
+            H5Fclose(old);
+        if (s.found) {
+            fsi_error("h5 output: static field '%s' written twice to %s", field, path);
+            rc = -1;
+        } else if (rc == 0 && write_dataset(file, field, ftype, mtype, data, n, ncomp) < 0)
+            rc = -1;
+    }
+    char what[300];
+    snprintf(what, sizeof what, "static field '%s' (%d x %d)", field ? field : "(none)", n,
+             ncomp);
+    rc = publish(file, rc, tmp, path, what);
+out:
+    free(path);
+    free(tmp);
+    return rc;
+}
+
+/* ------------------------------------------------------ vertex index files */
+
+/* NAME.frames/vertices_N.h5:/index = 0..N-1, the Polyvertex connectivity the sidecar
+ * gives every frame of N points. Without it the Xdmf3 readers build no cells. Written
+ * once per distinct point count. */
+static int ensure_vertices(fsi_h5_writer *w, int n)
+{
+    for (int i = 0; i < w->nvertex; i++)
+        if (w->vertex_counts[i] == n)
+            return 0;
+    int *counts = realloc(w->vertex_counts, (size_t)(w->nvertex + 1) * sizeof *counts);
+    int32_t *index = malloc((size_t)(n > 0 ? n : 1) * sizeof *index);
+    char *path = str_printf("%s/vertices_%d.h5", w->frames_dir, n);
+    char *tmp = str_printf("%s/vertices_%d.h5.tmp", w->frames_dir, n);
+    int rc = -1;
+    if (counts)
+        w->vertex_counts = counts;
+    if (counts && index && path && tmp) {
+        for (int i = 0; i < n; i++)
+            index[i] = i;
+        hid_t file = create_file(tmp);
+        if (file < 0)
+            report(tmp, "vertex index");
+        else
+            rc = publish(file,
+                         write_dataset(file, "index", H5T_STD_I32LE, H5T_NATIVE_INT32, index,
+                                       n, 1),
+                         tmp, path, "vertex index");
+    } else
+        fsi_error("h5 output: out of memory for the vertex index of %d points", n);
+    if (rc == 0)
+        w->vertex_counts[w->nvertex++] = n;
+    free(index);
+    free(path);
+    free(tmp);
+    return rc;
 }
 
 /* --------------------------------------------------------------- XDMF text */
@@ -266,8 +507,8 @@ static void xmf_data_item(FILE *f, const fsi_h5_writer *w, const frame_rec *fr,
         fprintf(f, " %d", ncomp);
     fprintf(f, "\" NumberType=\"%s\" Precision=\"%d\" Format=\"HDF\">",
             is_int ? "Int" : "Float", is_int ? 4 : 8);
-    xml_escaped(f, w->h5_base);
-    fprintf(f, ":/frames/%06d/", fr->frame);
+    xml_escaped(f, w->frames_rel);
+    fprintf(f, "/%06d.h5:/", fr->frame);
     xml_escaped(f, field);
     fputs("</DataItem>\n", f);
 }
@@ -276,8 +517,14 @@ static void xmf_grid(FILE *f, const fsi_h5_writer *w, const frame_rec *fr)
 {
     fprintf(f, "      <Grid Name=\"frame_%06d\" GridType=\"Uniform\">\n", fr->frame);
     fprintf(f, "        <Time Value=\"%.17g\"/>\n", fr->time);
+    /* Explicit connectivity: without it the Xdmf3 readers make N points and no cell. */
     fprintf(f, "        <Topology TopologyType=\"Polyvertex\" NumberOfElements=\"%d\" "
-               "NodesPerElement=\"1\"/>\n", fr->n);
+               "NodesPerElement=\"1\">\n", fr->n);
+    fprintf(f, "          <DataItem Dimensions=\"%d\" NumberType=\"Int\" Precision=\"4\" "
+               "Format=\"HDF\">", fr->n);
+    xml_escaped(f, w->frames_rel);
+    fprintf(f, "/vertices_%d.h5:/index</DataItem>\n", fr->n);
+    fputs("        </Topology>\n", f);
     fprintf(f, "        <Geometry GeometryType=\"%s\">\n", FSI_DIM == 2 ? "XY" : "XYZ");
     xmf_data_item(f, w, fr, "position", FSI_DIM, 0);
     fputs("        </Geometry>\n", f);
@@ -296,10 +543,13 @@ static void xmf_grid(FILE *f, const fsi_h5_writer *w, const frame_rec *fr)
  * only ever sees a complete file listing complete frames. */
 static int write_xmf(const fsi_h5_writer *w)
 {
-    FILE *f = fopen(w->xmf_tmp, "w");
+    char *path = str_printf("%s/%s.xmf", w->dir, w->name);
+    char *tmp = str_printf("%s/%s.xmf.tmp", w->dir, w->name);
+    int rc = -1;
+    FILE *f = path && tmp ? fopen(tmp, "w") : NULL;
     if (!f) {
-        fsi_error("h5 output: cannot write %s: %s", w->xmf_tmp, strerror(errno));
-        return -1;
+        fsi_error("h5 output: cannot write %s: %s", tmp ? tmp : w->name, strerror(errno));
+        goto out;
     }
     fputs("<?xml version=\"1.0\" ?>\n"
           "<!DOCTYPE Xdmf SYSTEM \"Xdmf.dtd\" []>\n"
@@ -313,114 +563,105 @@ static int write_xmf(const fsi_h5_writer *w)
           "  </Domain>\n"
           "</Xdmf>\n",
           f);
-    int bad = ferror(f);
-    if (fclose(f) != 0 || bad) {
-        fsi_error("h5 output: error writing %s", w->xmf_tmp);
-        remove(w->xmf_tmp);
-        return -1;
+    /* errno of the first failed write survives until fflush reports it. */
+    errno = 0;
+    int bad = fflush(f) != 0 || ferror(f);
+    int err = errno;
+    if (fclose(f) != 0 && !bad) {
+        bad = 1;
+        err = errno;
     }
-    if (rename(w->xmf_tmp, w->xmf_path) != 0) {
-        fsi_error("h5 output: cannot rename %s to %s: %s", w->xmf_tmp, w->xmf_path,
-                  strerror(errno));
-        remove(w->xmf_tmp);
-        return -1;
+    if (bad) {
+        fsi_error("h5 output: cannot write %s: %s", tmp, err ? strerror(err) : "write error");
+        remove(tmp);
+        goto out;
     }
-    return 0;
+    if (rename(tmp, path) != 0) {
+        fsi_error("h5 output: cannot rename %s to %s: %s", tmp, path, strerror(errno));
+        remove(tmp);
+        goto out;
+    }
+    rc = 0;
+out:
+    free(path);
+    free(tmp);
+    return rc;
 }
 
 /* -------------------------------------------------------------- public API */
 
-static fsi_h5_writer *writer_alloc(const char *dir, const char *name)
+/* Frame, static, vertex and temporary files of an earlier run in the same folder
+ * (`fsi run --force`) would be confused with this run's. Only names this writer
+ * creates are removed. */
+static void remove_stale(const fsi_h5_writer *w)
 {
-    fsi_h5_writer *w = calloc(1, sizeof *w);
-    if (!w)
-        return NULL;
-    w->file = -1;
-    w->group = -1;
-    w->h5_path = str_printf("%s/%s.h5", dir, name);
-    w->xmf_path = str_printf("%s/%s.xmf", dir, name);
-    w->xmf_tmp = str_printf("%s/%s.xmf.tmp", dir, name);
-    if (!w->h5_path || !w->xmf_path || !w->xmf_tmp) {
-        fsi_h5_close(w);
-        return NULL;
+    DIR *d = opendir(w->frames_dir);
+    if (!d)
+        return;
+    struct dirent *e;
+    while ((e = readdir(d)) != NULL) {
+        size_t len = strlen(e->d_name);
+        int ours = (len > 3 && strcmp(e->d_name + len - 3, ".h5") == 0) ||
+                   (len > 7 && strcmp(e->d_name + len - 7, ".h5.tmp") == 0);
+        if (ours) {
+            char *p = str_printf("%s/%s", w->frames_dir, e->d_name);
+            if (p)
+                remove(p);
+            free(p);
+        }
     }
-    const char *slash = strrchr(w->h5_path, '/');
-    w->h5_base = slash ? slash + 1 : w->h5_path;
-    return w;
+    closedir(d);
 }
 
 fsi_h5_writer *fsi_h5_create(const char *dir, const char *name, const char *solver)
 {
-    /* Failures are reported once by us, with file and field names; HDF5's own
-     * stack dump would bury that message. */
-    H5Eset_auto2(H5E_DEFAULT, NULL, NULL);
-    if (!dir || !name || !*name || !solver) {
-        fsi_error("h5 output: missing folder, name or solver");
+    /* Failures are reported once by us, with file and field names and the cause
+     * on_hdf5_error keeps; HDF5's own stack dump would bury that message. */
+    H5Eset_auto2(H5E_DEFAULT, on_hdf5_error, NULL);
+    if (!dir || !name || !*name || !solver || strchr(name, '/')) {
+        fsi_error("h5 output: missing folder, name or solver (or a '/' in the name)");
         return NULL;
     }
-    fsi_h5_writer *w = writer_alloc(dir, name);
+    fsi_h5_writer *w = calloc(1, sizeof *w);
     if (!w) {
         fsi_error("h5 output: out of memory");
         return NULL;
     }
-    hid_t fcpl = untimed_plist(H5P_FILE_CREATE);
-    hid_t file = fcpl >= 0 ? H5Fcreate(w->h5_path, H5F_ACC_TRUNC, fcpl, H5P_DEFAULT) : -1;
-    if (fcpl >= 0)
-        H5Pclose(fcpl);
-    if (file < 0) {
-        fsi_error("h5 output: cannot create %s", w->h5_path);
+    w->file = -1;
+    w->last_frame = -1;
+    w->dir = strdup(dir);
+    w->name = strdup(name);
+    w->solver = strdup(solver);
+    w->frames_rel = str_printf("%s.frames", name);
+    w->frames_dir = str_printf("%s/%s.frames", dir, name);
+    if (!w->dir || !w->name || !w->solver || !w->frames_rel || !w->frames_dir) {
+        fsi_error("h5 output: out of memory");
         fsi_h5_close(w);
         return NULL;
     }
-    int rc = write_root(file, name, solver);
-    if (H5Fclose(file) < 0 || rc < 0) {
-        fsi_error("h5 output: cannot write the root attributes of %s", w->h5_path);
+    if (mkdir(w->frames_dir, 0777) != 0 && errno != EEXIST) {
+        fsi_error("h5 output: cannot create the folder %s: %s", w->frames_dir,
+                  strerror(errno));
         fsi_h5_close(w);
         return NULL;
     }
-    if (write_xmf(w) < 0) {
+    remove_stale(w);
+    if (write_static_file(w, NULL, 0, 0, NULL, 0, 0) < 0 || write_master(w) < 0 ||
+        write_xmf(w) < 0) {
         fsi_h5_close(w);
         return NULL;
     }
     return w;
-}
-
-static int open_file(fsi_h5_writer *w)
-{
-    w->file = H5Fopen(w->h5_path, H5F_ACC_RDWR, H5P_DEFAULT);
-    if (w->file < 0) {
-        fsi_error("h5 output: cannot reopen %s", w->h5_path);
-        return -1;
-    }
-    return 0;
 }
 
 static int write_static(fsi_h5_writer *w, const char *field, hid_t ftype, hid_t mtype,
                         const void *data, int n, int ncomp)
 {
-    if (!w || !field)
+    if (!w || !field || n < 0 || ncomp < 1 || (n > 0 && !data)) {
+        fsi_error("h5 output: bad static field '%s'", field ? field : "(null)");
         return -1;
-    /* Between frames the file is closed; during a frame it is already open. */
-    int opened = 0;
-    if (w->file < 0) {
-        if (open_file(w) < 0)
-            return -1;
-        opened = 1;
     }
-    int rc = -1;
-    hid_t g = H5Gopen2(w->file, "static", H5P_DEFAULT);
-    if (g >= 0) {
-        rc = write_dataset(g, field, ftype, mtype, data, n, ncomp);
-        H5Gclose(g);
-    }
-    if (opened && H5Fclose(w->file) < 0)
-        rc = -1;
-    if (opened)
-        w->file = -1;
-    if (rc < 0)
-        fsi_error("h5 output: cannot write static field '%s' (%d x %d) to %s", field, n,
-                  ncomp, w->h5_path);
-    return rc;
+    return write_static_file(w, field, ftype, mtype, data, n, ncomp);
 }
 
 int fsi_h5_write_static_real(fsi_h5_writer *w, const char *field, const double *data,
@@ -464,6 +705,21 @@ static const void *in_point_order(fsi_h5_writer *w, const void *data, int n, siz
     return w->scratch;
 }
 
+/* Drops the open frame's temporary file; nothing of it is published. */
+static void abandon_frame(fsi_h5_writer *w)
+{
+    if (w->file >= 0)
+        H5Fclose(w->file);
+    w->file = -1;
+    if (w->frame_tmp)
+        remove(w->frame_tmp);
+    free(w->frame_tmp);
+    free(w->frame_path);
+    w->frame_tmp = w->frame_path = NULL;
+    w->in_frame = 0;
+    frame_rec_clear(&w->cur);
+}
+
 int fsi_h5_begin_frame(fsi_h5_writer *w, int frame, double time, long step, int n,
                        const double *position)
 {
@@ -471,34 +727,41 @@ int fsi_h5_begin_frame(fsi_h5_writer *w, int frame, double time, long step, int 
         return -1;
     if (w->in_frame) {
         fsi_error("h5 output: frame %d begun in %s before frame %d ended", frame,
-                  w->h5_path, w->cur.frame);
+                  w->frames_dir, w->cur.frame);
         return -1;
     }
     if (frame < 0 || n < 0 || (n > 0 && !position)) {
-        fsi_error("h5 output: bad frame %d with %d points for %s", frame, n, w->h5_path);
+        fsi_error("h5 output: bad frame %d with %d points for %s", frame, n, w->frames_dir);
         return -1;
     }
+    if (frame <= w->last_frame) {
+        fsi_error("h5 output: frame %d of %s begun after frame %d (frame numbers must "
+                  "increase)", frame, w->frames_dir, w->last_frame);
+        return -1;
+    }
+    w->last_frame = frame;
     if (n > 0 && !(position = in_point_order(w, position, n, FSI_DIM * sizeof *position))) {
-        fsi_error("h5 output: out of memory for frame %d of %s", frame, w->h5_path);
+        fsi_error("h5 output: out of memory for frame %d of %s", frame, w->frames_dir);
         return -1;
     }
-    if (open_file(w) < 0)
-        return -1;
-    char name[32];
-    snprintf(name, sizeof name, "frames/%06d", frame);
-    w->group = create_group(w->file, name);
-    if (w->group < 0 || write_frame_attrs(w->group, time, step, frame) < 0 ||
-        write_dataset(w->group, "position", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, position, n,
-                      FSI_DIM) < 0) {
-        fsi_error("h5 output: cannot write frame %d (group /%s or its position) to %s",
-                  frame, name, w->h5_path);
-        /* The partial group stays in the file but is never listed in the sidecar. */
-        close_file(w);
-        return -1;
-    }
+    w->frame_path = frame_file_name(w, frame, "");
+    w->frame_tmp = frame_file_name(w, frame, ".tmp");
     w->cur = (frame_rec){.frame = frame, .time = time, .n = n};
     w->in_frame = 1;
     w->frame_failed = 0;
+    if (!w->frame_path || !w->frame_tmp) {
+        fsi_error("h5 output: out of memory for frame %d of %s", frame, w->frames_dir);
+        abandon_frame(w);
+        return -1;
+    }
+    w->file = create_file(w->frame_tmp);
+    if (w->file < 0 || write_frame_attrs(w->file, time, step, frame) < 0 ||
+        write_dataset(w->file, "position", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, position, n,
+                      FSI_DIM) < 0) {
+        report(w->frame_tmp, "frame %d, attributes or position", frame);
+        abandon_frame(w);
+        return -1;
+    }
     return 0;
 }
 
@@ -508,25 +771,27 @@ static int write_field(fsi_h5_writer *w, const char *field, hid_t ftype, hid_t m
     if (!w || !field)
         return -1;
     if (!w->in_frame) {
-        fsi_error("h5 output: field '%s' written to %s outside a frame", field, w->h5_path);
+        fsi_error("h5 output: field '%s' written to %s outside a frame", field,
+                  w->frames_dir);
         return -1;
     }
     if (ncomp != 1 && ncomp != FSI_DIM && ncomp != FSI_DIM * FSI_DIM) {
         fsi_error("h5 output: field '%s' of frame %d in %s has %d components "
-                  "(1, %d or %d allowed)", field, w->cur.frame, w->h5_path, ncomp, FSI_DIM,
+                  "(1, %d or %d allowed)", field, w->cur.frame, w->frame_tmp, ncomp, FSI_DIM,
                   FSI_DIM * FSI_DIM);
         w->frame_failed = 1;
         return -1;
     }
     if (w->cur.n > 0 && !(data = in_point_order(w, data, w->cur.n, (size_t)ncomp * item_bytes))) {
-        fsi_error("h5 output: out of memory for field '%s' of %s", field, w->h5_path);
+        fsi_error("h5 output: out of memory for field '%s' of %s", field, w->frame_tmp);
         w->frame_failed = 1;
         return -1;
     }
-    if (write_dataset(w->group, field, ftype, mtype, data, w->cur.n, ncomp) < 0 ||
+    errno = 0;
+    cause_reset();
+    if (write_dataset(w->file, field, ftype, mtype, data, w->cur.n, ncomp) < 0 ||
         frame_rec_add(&w->cur, field, ncomp, is_int) < 0) {
-        fsi_error("h5 output: cannot write field '%s' of frame %d to %s", field,
-                  w->cur.frame, w->h5_path);
+        report(w->frame_tmp, "field '%s' of frame %d", field, w->cur.frame);
         w->frame_failed = 1;
         return -1;
     }
@@ -551,27 +816,40 @@ int fsi_h5_end_frame(fsi_h5_writer *w)
 {
     if (!w || !w->in_frame) {
         fsi_error("h5 output: end of a frame that was not begun%s%s", w ? " in " : "",
-                  w ? w->h5_path : "");
+                  w ? w->frames_dir : "");
         return -1;
     }
     int frame = w->cur.frame;
-    H5Gclose(w->group);
-    w->group = -1;
-    herr_t closed = H5Fclose(w->file);
+    if (w->frame_failed) {
+        abandon_frame(w);
+        return -1;
+    }
+    char what[64];
+    snprintf(what, sizeof what, "frame %d", frame);
+    hid_t file = w->file;
     w->file = -1;
+    /* Order matters: the frame and its vertex index are in place before the master
+     * and the sidecar name them. */
+    if (publish(file, 0, w->frame_tmp, w->frame_path, what) < 0 ||
+        ensure_vertices(w, w->cur.n) < 0) {
+        abandon_frame(w);
+        return -1;
+    }
+    free(w->frame_tmp);
+    free(w->frame_path);
+    w->frame_tmp = w->frame_path = NULL;
     w->in_frame = 0;
-    if (closed < 0 || w->frame_failed) {
-        if (closed < 0)
-            fsi_error("h5 output: cannot close %s after frame %d", w->h5_path, frame);
-        frame_rec_clear(&w->cur);
-        return -1;
-    }
     if (push_done(w) < 0) {
-        fsi_error("h5 output: out of memory listing frame %d of %s", frame, w->h5_path);
+        fsi_error("h5 output: out of memory listing frame %d of %s", frame, w->frames_dir);
         frame_rec_clear(&w->cur);
         return -1;
     }
-    return write_xmf(w);
+    if (write_master(w) < 0 || write_xmf(w) < 0) {
+        /* The previous master and sidecar stay, listing the frames before this one. */
+        frame_rec_clear(&w->done[--w->ndone]);
+        return -1;
+    }
+    return 0;
 }
 
 int fsi_h5_frames(const fsi_h5_writer *w)
@@ -583,15 +861,19 @@ void fsi_h5_close(fsi_h5_writer *w)
 {
     if (!w)
         return;
-    /* An unfinished frame stays out of the sidecar, as after a crash. */
-    close_file(w);
+    /* An unfinished frame is never published, as after a crash. */
+    if (w->in_frame)
+        abandon_frame(w);
     frame_rec_clear(&w->cur);
     for (int i = 0; i < w->ndone; i++)
         frame_rec_clear(&w->done[i]);
     free(w->done);
+    free(w->vertex_counts);
     free(w->scratch);
-    free(w->h5_path);
-    free(w->xmf_path);
-    free(w->xmf_tmp);
+    free(w->dir);
+    free(w->name);
+    free(w->solver);
+    free(w->frames_rel);
+    free(w->frames_dir);
     free(w);
 }

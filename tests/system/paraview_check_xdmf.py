@@ -7,15 +7,17 @@ Run with pvbatch (tests/system/test_paraview_xdmf.sh does):
       --value 2:velocity:6:1=-261.125 --point 2:6=26,26.25
 
 --value FRAME:FIELD:POINT:COMP=V and --point FRAME:POINT=X,Y[,Z] use frame indices in
-time order. The file is read with the reader OpenDataFile picks (Xdmf3) and with
-the legacy "XDMF Reader", since the GUI offers both for .xmf. Prints one line per
+time order. The file is read with the reader OpenDataFile picks (Xdmf3ReaderS),
+with Xdmf3ReaderT and with the legacy "XDMF Reader", since the GUI offers all of
+them for .xmf. Every reader must give one vertex cell per particle (without cells
+the Points representation shows nothing and Threshold returns nothing). Prints one line per
 mismatch and exits 1 if there was any, 0 otherwise.
 """
 import argparse
 import sys
 
 from paraview import servermanager
-from paraview.simple import Delete, OpenDataFile, XDMFReader
+from paraview.simple import Delete, OpenDataFile, XDMFReader, Xdmf3ReaderT
 
 COMPONENTS = {"scalar": lambda d: 1, "vector": lambda d: d, "tensor": lambda d: d * d}
 failures = []
@@ -123,6 +125,14 @@ def check_reader(reader, args, legacy):
             fail("%s: %d points, expected %d"
                  % (label, data.GetNumberOfPoints(), args.counts[frame]))
             continue
+        if data.GetNumberOfCells() != data.GetNumberOfPoints():
+            fail("%s: %d cells for %d points, expected one vertex cell per point"
+                 % (label, data.GetNumberOfCells(), data.GetNumberOfPoints()))
+        elif data.GetNumberOfPoints() > 0 and (
+                data.GetCell(0).GetNumberOfPoints() != 1
+                or data.GetCell(data.GetNumberOfCells() - 1).GetPointId(0)
+                != data.GetNumberOfPoints() - 1):
+            fail("%s: cells are not one vertex per point in order" % label)
         check_fields(label, data, frame, args, legacy)
         check_points(label, data, frame, args)
 
@@ -137,11 +147,15 @@ def main():
             fail("OpenDataFile picked %s, expected an Xdmf3 reader" % reader.GetXMLName())
         check_reader(reader, args, legacy=False)
         Delete(reader)
+    reader = Xdmf3ReaderT(FileName=[args.xmf])
+    check_reader(reader, args, legacy=False)
+    Delete(reader)
     check_reader(XDMFReader(FileNames=[args.xmf]), args, legacy=True)
     if failures:
         print("paraview_check_xdmf: %d check(s) failed" % len(failures), file=sys.stderr)
         return 1
-    print("paraview_check_xdmf: OK (%d time steps)" % len(args.times))
+    print("paraview_check_xdmf: OK (%d time steps, 3 readers, cells == points)"
+          % len(args.times))
     return 0
 
 

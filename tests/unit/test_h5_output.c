@@ -321,6 +321,61 @@ static void check_h5(const char *dir)
     H5Fclose(file);
 }
 
+/* The Polyvertex connectivity the sidecar points at: 0..n-1. */
+static void check_vertices(const char *dir)
+{
+    char path[4200];
+    snprintf(path, sizeof path, "%s/particles.frames/vertices_7.h5", dir);
+    hid_t file = H5Fopen(path, H5F_ACC_RDONLY, H5P_DEFAULT);
+    CHECK(file >= 0, "open %s", path);
+    if (file < 0)
+        return;
+    int32_t index[7];
+    if (read_dataset(file, "index", H5T_NATIVE_INT32, H5T_INTEGER, 7, 1, index) == 0)
+        for (int i = 0; i < 7; i++)
+            CHECK(index[i] == i, "vertex index[%d] = %d", i, (int)index[i]);
+    H5Fclose(file);
+}
+
+static hsize_t frames_listed(hid_t file)
+{
+    H5G_info_t info = {0};
+    return H5Gget_info_by_name(file, "frames", &info, H5P_DEFAULT) >= 0 ? info.nlinks : 0;
+}
+
+/* A reader holding the files (ParaView, h5py, h5dump during a run) must not stop the
+ * writer, and keeps the consistent snapshot it opened. */
+static void check_held_by_reader(const char *dir)
+{
+    fsi_h5_writer *w = fsi_h5_create(dir, "held", "s");
+    CHECK(w != NULL, "create held");
+    if (!w)
+        return;
+    CHECK(write_frame(w, 0) == 0, "held: frame 0");
+    char path[4200];
+    snprintf(path, sizeof path, "%s/held.h5", dir);
+    hid_t r = H5Fopen(path, H5F_ACC_RDONLY, H5P_DEFAULT);
+    hid_t g = r >= 0 ? H5Gopen2(r, "frames/000000", H5P_DEFAULT) : -1;
+    CHECK(r >= 0 && g >= 0, "reader opens %s and its frame 0", path);
+    CHECK(write_static(w) == 0, "static data while a reader holds the files");
+    CHECK(write_frame(w, 1) == 0, "frame 1 while a reader holds the files");
+    CHECK(write_frame(w, 2) == 0, "frame 2 while a reader holds the files");
+    CHECK(frames_listed(r) == 1, "the reader's snapshot still lists 1 frame, not %llu",
+          (unsigned long long)frames_listed(r));
+    check_real(g, "position", 0, counts[0], FSI_DIM, position);
+    if (g >= 0)
+        H5Gclose(g);
+    if (r >= 0)
+        H5Fclose(r);
+    fsi_h5_close(w);
+    r = H5Fopen(path, H5F_ACC_RDONLY, H5P_DEFAULT);
+    CHECK(r >= 0 && frames_listed(r) == NFRAMES, "reopened %s lists %d frames", path, NFRAMES);
+    if (r >= 0) {
+        check_frame(r, 2);
+        H5Fclose(r);
+    }
+}
+
 /* ------------------------------------------------------------------- text */
 
 static char *read_text(const char *path)
@@ -365,8 +420,12 @@ static void check_xmf(const char *dir)
     CHECK(count_of(x, "NumberOfElements=\"5\"") == 2, "two grids of 5 points");
     CHECK(count_of(x, "NumberOfElements=\"7\"") == 1, "one grid of 7 points");
     CHECK(count_of(x, "<Time Value=\"1.25\"/>") == 1, "time of frame 1");
-    CHECK(count_of(x, "particles.h5:/frames/000002/stress<") == 1, "stress of frame 2");
-    CHECK(count_of(x, "NumberType=\"Int\" Precision=\"4\"") == NFRAMES, "int fields");
+    CHECK(count_of(x, "particles.frames/000002.h5:/stress<") == 1, "stress of frame 2");
+    CHECK(count_of(x, "particles.frames/vertices_5.h5:/index<") == 2 &&
+              count_of(x, "particles.frames/vertices_7.h5:/index<") == 1,
+          "every grid has its Polyvertex connectivity");
+    /* material and the topology of each frame */
+    CHECK(count_of(x, "NumberType=\"Int\" Precision=\"4\"") == 2 * NFRAMES, "int items");
     CHECK(strstr(x, FSI_DIM == 2 ? "GeometryType=\"XY\"" : "GeometryType=\"XYZ\"") != NULL,
           "geometry type");
     CHECK(count_of(x, "<Attribute ") == 4 * NFRAMES, "%d attributes",
@@ -379,12 +438,18 @@ static void check_xmf(const char *dir)
     CHECK(x != NULL, "read %s", path);
     if (x) {
         CHECK(count_of(x, "GridType=\"Uniform\"") == 1, "misuse.xmf lists only frame 2");
-        CHECK(strstr(x, "/frames/000002/") != NULL, "misuse.xmf lists frame 2");
+        CHECK(strstr(x, "misuse.frames/000002.h5:/") != NULL, "misuse.xmf lists frame 2");
         free(x);
     }
-    snprintf(path, sizeof path, "%s/particles.xmf.tmp", dir);
-    struct stat st;
-    CHECK(stat(path, &st) != 0, "temporary %s left behind", path);
+    const char *left[] = {"particles.xmf.tmp", "particles.h5.tmp",
+                          "particles.frames/000002.h5.tmp", "particles.frames/static.h5.tmp",
+                          "misuse.frames/000003.h5.tmp", "misuse.frames/000003.h5",
+                          "misuse.frames/000000.h5", "misuse.frames/000001.h5"};
+    for (size_t i = 0; i < sizeof left / sizeof *left; i++) {
+        snprintf(path, sizeof path, "%s/%s", dir, left[i]);
+        struct stat st;
+        CHECK(stat(path, &st) != 0, "%s left behind (temporary or failed frame)", path);
+    }
 }
 
 /* Identical input must give identical bytes (no timestamps in the file). */
@@ -430,8 +495,14 @@ int main(void)
     write_all(again);
     check_h5(dir);
     check_misuse(dir);
+    check_vertices(dir);
+    check_held_by_reader(dir);
     check_xmf(dir);
     check_same_bytes(dir, again, "particles.h5");
+    check_same_bytes(dir, again, "particles.frames/000000.h5");
+    check_same_bytes(dir, again, "particles.frames/000002.h5");
+    check_same_bytes(dir, again, "particles.frames/static.h5");
+    check_same_bytes(dir, again, "particles.frames/vertices_7.h5");
     check_same_bytes(dir, again, "particles.xmf");
     if (failures) {
         fprintf(stderr, "test_h5_output: %d check(s) failed\n", failures);
