@@ -56,4 +56,8 @@ int fsi_h5_frames(const fsi_h5_writer *w);
 
 void fsi_h5_close(fsi_h5_writer *w);
 
+/* The message of the last failure of any writer of this process (file, what and the
+ * system's reason; "" before any): for a solver's fsi_abort(). */
+const char *fsi_h5_last_error(void);
+
 #endif

@@ -3,6 +3,7 @@
  * advances and publishes loads, the solid advances), ends windows on output and probe
  * times, watches every process's liveness, and stops the run naming whoever failed.
  * Protocol: docs/protocol.md. */
+#include <errno.h>
 #include <float.h>
 #include <limits.h>
 #include <math.h>
@@ -332,17 +333,24 @@ static int open_probes(coupler *c)
             names[k++] = c->part[i].probe_names[j];
     int rc = fsi_probes_csv_open(&c->probes, c->env.out_dir, n, names);
     free(names);
+    if (rc != 0)
+        fail(c, FSI_COUPLER_NAME, "%s", c->probes.error);
     return rc;
 }
 
-static void write_probe_row(coupler *c, double t)
+/* A row that cannot be written stops the run: probes.csv then ends at the last
+ * complete row. */
+static int write_probe_row(coupler *c, double t)
 {
     double values[1024];
     int k = 0;
     for (int i = 0; i < c->n_part; i++)
         for (int j = 0; j < c->part[i].n_probes && k < 1024; j++)
             values[k++] = c->part[i].probe_values[j];
-    fsi_probes_csv_row(&c->probes, t, values);
+    if (fsi_probes_csv_row(&c->probes, t, values) == 0)
+        return 0;
+    fail(c, FSI_COUPLER_NAME, "%s", c->probes.error);
+    return -1;
 }
 
 /* Keeps at most this many window timings (8 MB); later windows are not sampled. */
@@ -387,8 +395,8 @@ static int run_windows(coupler *c)
         if (c->window > 0)
             record_window_wall(c, fsi_wall_seconds() - granted);
         c->t = plan.t_next;
-        if (plan.probe)
-            write_probe_row(c, c->t);
+        if (plan.probe && write_probe_row(c, c->t) != 0)
+            return -1;
         fsi_progress_update(&c->progress, c->t, c->window, 0);
         if (plan.last)
             break;
@@ -454,15 +462,16 @@ static void write_bus_counters(FILE *log, const char *who, fsi_bus_counters b)
 }
 
 /* Appends the coupler's part of run.log: windows, timers and counters of every
- * participant, and the exit reason. */
-static void write_summary(coupler *c)
+ * participant, and the exit reason. Returns -1 (with a message naming the file)
+ * when any of it could not be written. */
+static int write_summary(coupler *c)
 {
     char path[PATH_MAX + 16];
     snprintf(path, sizeof path, "%s/run.log", c->env.out_dir);
     FILE *log = fopen(path, "a");
     if (!log) {
-        fsi_error("cannot append to %s", path);
-        return;
+        fsi_error("cannot append to %s: %s", path, strerror(errno));
+        return -1;
     }
     double wall = fsi_wall_seconds() - c->wall_start;
     fprintf(log, "\n[coupler]\nwindows = %d\nsimulated_time = %.9g s\nwall_time = %.3f s\n"
@@ -482,11 +491,21 @@ static void write_summary(coupler *c)
         fprintf(log, "\ncoupler_exit = failure: %s\n", c->reason);
     else
         fprintf(log, "\ncoupler_exit = ok\n");
-    fclose(log);
+    errno = 0;
+    int bad = fflush(log) != 0 || ferror(log);
+    int err = errno;
+    if (fclose(log) != 0 && !bad) {
+        bad = 1;
+        err = errno;
+    }
+    if (bad)
+        fsi_error("cannot append to %s: %s", path, err ? strerror(err) : "write error");
+    return bad ? -1 : 0;
 }
 
 static int setup(coupler *c)
 {
+    c->probes.fd = -1;
     fsi_log_set_name(FSI_COUPLER_NAME);
     if (fsi_run_env_read(&c->env, FSI_COUPLER_NAME, NULL) != 0)
         return -1;
@@ -560,9 +579,13 @@ int main(void)
         announce_abort(&c);
         fsi_error("run stopped: %s", c.reason);
     }
-    write_summary(&c);
+    if (fsi_probes_csv_close(&c.probes) != 0)
+        fail(&c, FSI_COUPLER_NAME, "%s", c.probes.error);
+    int summary = write_summary(&c);
     int status = !c.failed ? FSI_EXIT_OK
                  : c.failure_relayed ? FSI_EXIT_STOPPED_BY_PEER : FSI_EXIT_RUN_FAILURE;
+    if (summary != 0)
+        status = FSI_EXIT_RUN_FAILURE;
     teardown(&c);
     return status;
 }

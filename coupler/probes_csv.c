@@ -1,42 +1,106 @@
 #include "probes_csv.h"
 
-#include <limits.h>
+#include <errno.h>
+#include <fcntl.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
 
-#include "log.h"
+/* Appends one complete line, or nothing: a partial write is truncated away. */
+static int write_line(fsi_probes_csv *csv, const char *line, size_t len)
+{
+    size_t done = 0;
+    while (done < len) {
+        ssize_t k = write(csv->fd, line + done, len - done);
+        if (k < 0 && errno == EINTR)
+            continue;
+        if (k <= 0) {
+            int err = k < 0 ? errno : ENOSPC;
+            snprintf(csv->error, sizeof csv->error, "cannot write %s: %s", csv->path,
+                     strerror(err));
+            if (done > 0 && ftruncate(csv->fd, csv->committed) == 0)
+                lseek(csv->fd, csv->committed, SEEK_SET);
+            return -1;
+        }
+        done += (size_t)k;
+    }
+    csv->committed += (off_t)len;
+    return 0;
+}
+
+/* Grows *buf to hold at least need bytes. */
+static int reserve(char **buf, size_t *cap, size_t need)
+{
+    if (need <= *cap)
+        return 0;
+    char *p = realloc(*buf, need);
+    if (!p)
+        return -1;
+    *buf = p;
+    *cap = need;
+    return 0;
+}
 
 int fsi_probes_csv_open(fsi_probes_csv *csv, const char *dir, int n_columns,
                         char *const *column_names)
 {
-    char path[PATH_MAX];
-    snprintf(path, sizeof path, "%s/probes.csv", dir);
-    csv->file = fopen(path, "w");
     csv->n_columns = n_columns;
-    if (!csv->file) {
-        fsi_error("cannot create %s", path);
+    csv->committed = 0;
+    csv->error[0] = '\0';
+    snprintf(csv->path, sizeof csv->path, "%s/probes.csv", dir);
+    csv->fd = open(csv->path, O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+    if (csv->fd < 0) {
+        snprintf(csv->error, sizeof csv->error, "cannot create %s: %s", csv->path,
+                 strerror(errno));
         return -1;
     }
-    fprintf(csv->file, "time");
+    size_t len = 5, cap = 0;
     for (int i = 0; i < n_columns; i++)
-        fprintf(csv->file, ",%s", column_names[i]);
-    fprintf(csv->file, "\n");
-    fflush(csv->file);
-    return 0;
+        len += strlen(column_names[i]) + 1;
+    char *line = NULL;
+    if (reserve(&line, &cap, len + 2) != 0) {
+        snprintf(csv->error, sizeof csv->error, "out of memory for the header of %s",
+                 csv->path);
+        return -1;
+    }
+    size_t at = (size_t)snprintf(line, cap, "time");
+    for (int i = 0; i < n_columns; i++)
+        at += (size_t)snprintf(line + at, cap - at, ",%s", column_names[i]);
+    at += (size_t)snprintf(line + at, cap - at, "\n");
+    int rc = write_line(csv, line, at);
+    free(line);
+    return rc;
 }
 
-void fsi_probes_csv_row(fsi_probes_csv *csv, double time, const double *values)
+int fsi_probes_csv_row(fsi_probes_csv *csv, double time, const double *values)
 {
-    if (!csv->file)
-        return;
-    fprintf(csv->file, "%.17g", time);
+    if (csv->fd < 0)
+        return 0;
+    enum { NUMBER = 32 }; /* ",%.17g" of any double, with room to spare */
+    size_t cap = (size_t)(csv->n_columns + 1) * NUMBER + 2;
+    char *line = malloc(cap);
+    if (!line) {
+        snprintf(csv->error, sizeof csv->error, "out of memory for a row of %s", csv->path);
+        return -1;
+    }
+    size_t at = (size_t)snprintf(line, cap, "%.17g", time);
     for (int i = 0; i < csv->n_columns; i++)
-        fprintf(csv->file, ",%.17g", values[i]);
-    fprintf(csv->file, "\n");
-    fflush(csv->file);
+        at += (size_t)snprintf(line + at, cap - at, ",%.17g", values[i]);
+    at += (size_t)snprintf(line + at, cap - at, "\n");
+    int rc = write_line(csv, line, at);
+    free(line);
+    return rc;
 }
 
-void fsi_probes_csv_close(fsi_probes_csv *csv)
+int fsi_probes_csv_close(fsi_probes_csv *csv)
 {
-    if (csv->file)
-        fclose(csv->file);
-    csv->file = NULL;
+    int rc = 0;
+    if (csv->fd >= 0 && close(csv->fd) != 0) {
+        snprintf(csv->error, sizeof csv->error, "cannot close %s: %s", csv->path,
+                 strerror(errno));
+        rc = -1;
+    }
+    csv->fd = -1;
+    return rc;
 }

@@ -1,20 +1,27 @@
 /* probes.csv: one header line "time,<probe>_<quantity>,..." and one row per probe
- * time, flushed row by row so a stopped run leaves a readable file. */
+ * time. Each row reaches the file with one write(); a failed or short write (disk
+ * full) is cut back to the last complete row, so the file always ends at a row. */
 #ifndef FSI_PROBES_CSV_H
 #define FSI_PROBES_CSV_H
 
-#include <stdio.h>
+#include <sys/types.h>
 
 typedef struct {
-    FILE *file;
+    int fd;            /* -1 when closed */
     int n_columns;
+    off_t committed;   /* bytes of complete lines */
+    char path[4096];
+    char error[4400];  /* the last failure: file and system error text */
 } fsi_probes_csv;
 
-/* Opens DIR/probes.csv and writes the header; returns 0 or -1. */
+/* Opens DIR/probes.csv and writes the header; returns 0 or -1 (message in error). */
 int fsi_probes_csv_open(fsi_probes_csv *csv, const char *dir, int n_columns,
                         char *const *column_names);
-/* values[n_columns], printed exactly (%.17g) so runs compare bit for bit. */
-void fsi_probes_csv_row(fsi_probes_csv *csv, double time, const double *values);
-void fsi_probes_csv_close(fsi_probes_csv *csv);
+/* values[n_columns], printed exactly (%.17g) so runs compare bit for bit. Returns 0,
+ * or -1 with csv->error set when the row could not be written (the file then still
+ * ends at the previous row). */
+int fsi_probes_csv_row(fsi_probes_csv *csv, double time, const double *values);
+/* Returns 0, or -1 with csv->error set when closing reported a failed write. */
+int fsi_probes_csv_close(fsi_probes_csv *csv);
 
 #endif

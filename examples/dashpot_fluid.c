@@ -79,12 +79,15 @@ int main(void)
         fsi_write_interface(p, &reply);
         fsi_set_probe(p, probe_fy, solid.n > 0 ? l.force[1] : 0.0);
         /* The frame at the window's end shows the loads applied during it. */
-        if (fsi_output_frame(p) >= 0 && solid.n > 0) {
-            fsi_h5_begin_frame(out, fsi_output_frame(p), fsi_time(p) + fsi_window(p),
-                               fsi_window_index(p), solid.n, solid.position);
-            fsi_h5_write_field_real(out, "force", l.force, FSI_DIM);
-            fsi_h5_write_field_real(out, "pressure", l.pressure, 1);
-            fsi_h5_end_frame(out);
+        if (fsi_output_frame(p) >= 0 && solid.n > 0 &&
+            (fsi_h5_begin_frame(out, fsi_output_frame(p), fsi_time(p) + fsi_window(p),
+                                fsi_window_index(p), solid.n, solid.position) != 0 ||
+             fsi_h5_write_field_real(out, "force", l.force, FSI_DIM) != 0 ||
+             fsi_h5_write_field_real(out, "pressure", l.pressure, 1) != 0 ||
+             fsi_h5_end_frame(out) != 0)) {
+            fsi_abort(p, "cannot write output frame %d: %s", fsi_output_frame(p),
+                      fsi_h5_last_error());
+            break;
         }
         fsi_advance(p, time_step);
     }

@@ -128,7 +128,12 @@ int main(void)
         fsi_abort(p, "cannot create the output file");
         return FSI_EXIT_RUN_FAILURE;
     }
-    fsi_h5_write_static_real(out, "stiffness", s.stiffness, s.n, 1);
+    if (fsi_h5_write_static_real(out, "stiffness", s.stiffness, s.n, 1) != 0) {
+        fsi_abort(p, "cannot write the static data: %s", fsi_h5_last_error());
+        fsi_h5_close(out);
+        springs_free(&s);
+        return FSI_EXIT_RUN_FAILURE;
+    }
     int probe_uy = fsi_add_probe(p, "p0_uy");
     int probe_vy = fsi_add_probe(p, "p0_vy");
 
@@ -159,8 +164,14 @@ int main(void)
         fsi_set_probe(p, probe_vy, VY(&s, 0));
         if (fsi_output_frame(p) >= 0) {
             fsi_timer_start(&timers, t_output);
-            write_frame(out, &s, fsi_output_frame(p), fsi_time(p) + dt, fsi_window_index(p));
+            int rc = write_frame(out, &s, fsi_output_frame(p), fsi_time(p) + dt,
+                                 fsi_window_index(p));
             fsi_timer_stop(&timers, t_output);
+            if (rc != 0) {
+                fsi_abort(p, "cannot write output frame %d: %s", fsi_output_frame(p),
+                          fsi_h5_last_error());
+                break;
+            }
         }
         fsi_advance(p, DBL_MAX);    /* sub-cycling: the solid never limits the window */
     }

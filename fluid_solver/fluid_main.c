@@ -713,8 +713,8 @@ int main(void)
             rc = write_frame(&s, frame, t0 + dt, window);
             fsi_timer_stop(&s.timers, s.t_output);
             if (rc != 0) {
-                fsi_abort(part, "cannot write output frame %d at t = %.9g s (window %d)",
-                          frame, t0 + dt, window);
+                fsi_abort(part, "cannot write output frame %d at t = %.9g s (window %d): %s",
+                          frame, t0 + dt, window, fsi_h5_last_error());
                 break;
             }
         }

@@ -130,12 +130,31 @@ static int64_t new_run_id(void)
     return (int64_t)(id >> 1) | 1;   /* positive and never 0 */
 }
 
-static void write_log_header(const char *path, int argc, char **argv, int64_t run_id,
-                             const char *url, int isolated, const fsi_case *c)
+/* Flushes and closes a log written with stdio; 0, or -1 after a message naming the
+ * file and the system's reason (a full disk shows up here at the latest). */
+static int close_log(FILE *log, const char *path)
+{
+    errno = 0;
+    int bad = fflush(log) != 0 || ferror(log);
+    int err = errno;
+    if (fclose(log) != 0 && !bad) {
+        bad = 1;
+        err = errno;
+    }
+    if (bad)
+        fprintf(stderr, "fsi run: cannot write %s: %s\n", path,
+                err ? strerror(err) : "write error");
+    return bad ? -1 : 0;
+}
+
+static int write_log_header(const char *path, int argc, char **argv, int64_t run_id,
+                            const char *url, int isolated, const fsi_case *c)
 {
     FILE *log = fopen(path, "w");
-    if (!log)
-        return;
+    if (!log) {
+        fprintf(stderr, "fsi run: cannot create %s: %s\n", path, strerror(errno));
+        return -1;
+    }
     time_t now = time(NULL);
     char date[64];
     strftime(date, sizeof date, "%Y-%m-%dT%H:%M:%SZ", gmtime(&now));
@@ -159,21 +178,23 @@ static void write_log_header(const char *path, int argc, char **argv, int64_t ru
                 getenv("FSI_TEST_DROP_SEED") ? getenv("FSI_TEST_DROP_SEED") : "1");
     fprintf(log, "\n# resolved case\n");
     fsi_case_write_resolved(c, log);
-    fclose(log);
+    return close_log(log, path);
 }
 
-static void append_log(const char *path, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
+static int append_log(const char *path, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
 
-static void append_log(const char *path, const char *fmt, ...)
+static int append_log(const char *path, const char *fmt, ...)
 {
     FILE *log = fopen(path, "a");
-    if (!log)
-        return;
+    if (!log) {
+        fprintf(stderr, "fsi run: cannot append to %s: %s\n", path, strerror(errno));
+        return -1;
+    }
     va_list ap;
     va_start(ap, fmt);
     vfprintf(log, fmt, ap);
     va_end(ap);
-    fclose(log);
+    return close_log(log, path);
 }
 
 /* The coupler's own account of a failure, from its 'coupler_exit = failure: ...'
@@ -317,8 +338,10 @@ int main(int argc, char **argv)
     int64_t run_id = new_run_id();
     char log_path[PATH_MAX + 32];
     snprintf(log_path, sizeof log_path, "%s/run.log", out_abs);
-    write_log_header(log_path, argc, argv, run_id, url, isolated, c);
+    int header = write_log_header(log_path, argc, argv, run_id, url, isolated, c);
     fsi_case_free(c);
+    if (header != 0)
+        return FSI_EXIT_RUN_FAILURE;
 
     if (isolated && fsi_enter_private_network() != 0) {
         append_log(log_path, "\nexit = failure: no private network namespace\n");
@@ -365,7 +388,10 @@ int main(int argc, char **argv)
         fprintf(stderr, "fsi run: output written so far is in %s\n", out_abs);
         return FSI_EXIT_RUN_FAILURE;
     }
-    append_log(log_path, "\nexit = ok (%.2f s wall)\n", wall);
+    if (append_log(log_path, "\nexit = ok (%.2f s wall)\n", wall) != 0) {
+        fprintf(stderr, "fsi run: run failed: cannot record its end in %s\n", log_path);
+        return FSI_EXIT_RUN_FAILURE;
+    }
     printf("fsi run: finished in %.1f s; output in %s\n", wall, out_abs);
     return FSI_EXIT_OK;
 }

@@ -47,7 +47,7 @@ expect_reproduced() {   # expect_reproduced RUN PARTICIPANT
   local run="$1" p="$2" out="$1-replay-$2"
   "$REPLAY" "$run" --participant "$p" --out "$out" --threads 1 >"$out.txt" 2>&1 \
     || { cat "$out.txt" "$out/$p.log"; fail "replay of $p from $run: not reproduced"; }
-  h5diff -q "$run/$p.h5" "$out/$p.h5" || fail "$p.h5 of the replay differs from $run"
+  h5_same "$run" "$out" "$p" || fail "$p.h5 of the replay differs from $run"
   local compared differing
   compared=$(replay_stat "$out" messages_compared)
   differing=$(replay_stat "$out" messages_differing)
@@ -64,7 +64,7 @@ expect_detected() {   # expect_detected RUN PARTICIPANT KIND SET
   local status=$?
   set -e
   [ "$status" -eq 1 ] || { cat "$out.txt"; fail "replay of $p with $set: status $status, expected 1"; }
-  if h5diff -q "$run/$p.h5" "$out/$p.h5" >/dev/null 2>&1; then
+  if h5_same "$run" "$out" "$p"; then
     fail "replay of $p with $set: h5diff finds no difference"
   fi
   local differing first window
@@ -177,4 +177,4 @@ expect_bad no_section "has no \[fluid\] section" solid_only --participant fluid
 expect_bad unknown_participant "must be fluid or solid" demo --participant coupler
 expect_bad into_recording "must not be the recorded run" demo --participant fluid --force \
   --out demo
-h5diff -q demo/fluid.h5 demo-replay-fluid/fluid.h5 || fail "the recorded run was touched"
+h5_same demo demo-replay-fluid fluid || fail "the recorded run was touched"
