@@ -580,16 +580,9 @@ static int write_xmf(const fsi_h5_writer *w)
           "  </Domain>\n"
           "</Xdmf>\n",
           f);
-    /* errno of the first failed write survives until fflush reports it. */
-    errno = 0;
-    int bad = fflush(f) != 0 || ferror(f);
-    int err = errno;
-    if (fclose(f) != 0 && !bad) {
-        bad = 1;
-        err = errno;
-    }
-    if (bad) {
-        h5_error("h5 output: cannot write %s: %s", tmp, err ? strerror(err) : "write error");
+    int err = fsi_fclose_checked(f);
+    if (err) {
+        h5_error("h5 output: cannot write %s: %s", tmp, strerror(err));
         remove(tmp);
         goto out;
     }

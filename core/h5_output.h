@@ -1,17 +1,19 @@
-/* Particle output: one HDF5 file per participant plus an XDMF sidecar that
- * ParaView opens as a time series (docs/output.md).
+/* Particle output: per participant a master file NAME.h5, an XDMF sidecar NAME.xmf
+ * that ParaView opens as a time series, and a folder NAME.frames/ holding the data
+ * (docs/output.md).
  *
- * File layout:
+ * Layout seen through NAME.h5 (external links into NAME.frames/):
  *   /                      attributes: participant, solver, dimension, fsi_version
  *   /static/<field>        written once (e.g. id, initial position, mass)
- *   /frames/NNNNNN/<field> one group per output frame, attributes time [s], step, frame
+ *   /frames/NNNNNN/<field> one file per output frame, attributes time [s], step, frame
  * Every frame holds "position" (n x FSI_DIM) and any number of point fields with
  * 1 (scalar), FSI_DIM (vector) or FSI_DIM*FSI_DIM (tensor) components.
  *
- * Robustness: the file is closed after each frame and reopened for the next, and
- * the XDMF sidecar is rewritten atomically (write to a temporary, rename) listing only
- * complete frames, so a process killed at any moment between frames leaves files that
- * h5dump and ParaView read.
+ * Robustness: every file is written under a temporary name, closed and renamed into
+ * place, and never opened for writing again; NAME.h5 and NAME.xmf are rebuilt after
+ * each complete frame. So a reader holding any file (ParaView, h5py, h5dump during the
+ * run) never blocks the writer and always sees complete files, and a process killed
+ * at any moment leaves files listing every complete frame.
  *
  * Ownership: the writer copies nothing it is given; arrays only need to live for the
  * duration of the call. */
@@ -22,8 +24,8 @@
 
 typedef struct fsi_h5_writer fsi_h5_writer;
 
-/* Creates (truncates) DIR/NAME.h5 and DIR/NAME.xmf. Returns NULL with a message
- * on stderr when the file cannot be created. */
+/* Creates DIR/NAME.h5, DIR/NAME.xmf and DIR/NAME.frames/ (its stale *.h5 removed).
+ * Returns NULL with a message on stderr when they cannot be created. */
 fsi_h5_writer *fsi_h5_create(const char *dir, const char *name, const char *solver);
 
 /* Static data, written once before or between frames. ncomp components per point. */
@@ -40,7 +42,8 @@ int fsi_h5_write_static_int(fsi_h5_writer *w, const char *field, const int32_t *
 int fsi_h5_set_point_order(fsi_h5_writer *w, const int *order, int n);
 
 /* Opens frame 'frame' at simulated time 'time' after coupling window 'step',
- * with n points whose coordinates are position[n * FSI_DIM]. */
+ * with n points whose coordinates are position[n * FSI_DIM]. Frame numbers must
+ * increase from call to call. */
 int fsi_h5_begin_frame(fsi_h5_writer *w, int frame, double time, long step, int n,
                        const double *position);
 /* A point field of the open frame: n * ncomp values, ncomp in {1, FSI_DIM, FSI_DIM^2}. */
@@ -48,7 +51,7 @@ int fsi_h5_write_field_real(fsi_h5_writer *w, const char *field, const double *d
                             int ncomp);
 int fsi_h5_write_field_int(fsi_h5_writer *w, const char *field, const int32_t *data,
                            int ncomp);
-/* Closes the frame: flushes and closes the HDF5 file, rewrites the XDMF sidecar. */
+/* Closes the frame: publishes its file, then rebuilds NAME.h5 and the sidecar. */
 int fsi_h5_end_frame(fsi_h5_writer *w);
 
 /* Number of complete frames written so far. */

@@ -1,5 +1,6 @@
 #include "log.h"
 
+#include <errno.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -45,4 +46,16 @@ void fsi_error(const char *fmt, ...)
     va_start(ap, fmt);
     log_line("error: ", fmt, ap);
     va_end(ap);
+}
+
+int fsi_fclose_checked(FILE *f)
+{
+    errno = 0;
+    int bad = fflush(f) != 0 || ferror(f);
+    int err = errno;
+    if (fclose(f) != 0 && !bad) {
+        bad = 1;
+        err = errno;
+    }
+    return bad ? (err ? err : EIO) : 0;
 }

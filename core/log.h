@@ -4,6 +4,7 @@
 #define FSI_LOG_H
 
 #include <stdarg.h>
+#include <stdio.h>
 
 /* Name printed in front of every message ("coupler", "solid", ...). */
 void fsi_log_set_name(const char *name);
@@ -12,6 +13,11 @@ const char *fsi_log_name(void);
 void fsi_info(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
 void fsi_warn(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
 void fsi_error(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
+
+/* Flushes and closes a file written with stdio. Returns 0, or the errno of the first
+ * failed write (EIO when the system gave none): a full disk shows up here at the
+ * latest. The file is closed either way. */
+int fsi_fclose_checked(FILE *f);
 
 /* Exit codes shared by every program of the project. */
 enum {

@@ -491,16 +491,10 @@ static int write_summary(coupler *c)
         fprintf(log, "\ncoupler_exit = failure: %s\n", c->reason);
     else
         fprintf(log, "\ncoupler_exit = ok\n");
-    errno = 0;
-    int bad = fflush(log) != 0 || ferror(log);
-    int err = errno;
-    if (fclose(log) != 0 && !bad) {
-        bad = 1;
-        err = errno;
-    }
-    if (bad)
-        fsi_error("cannot append to %s: %s", path, err ? strerror(err) : "write error");
-    return bad ? -1 : 0;
+    int err = fsi_fclose_checked(log);
+    if (err)
+        fsi_error("cannot append to %s: %s", path, strerror(err));
+    return err ? -1 : 0;
 }
 
 static int setup(coupler *c)

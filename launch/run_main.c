@@ -134,17 +134,10 @@ static int64_t new_run_id(void)
  * file and the system's reason (a full disk shows up here at the latest). */
 static int close_log(FILE *log, const char *path)
 {
-    errno = 0;
-    int bad = fflush(log) != 0 || ferror(log);
-    int err = errno;
-    if (fclose(log) != 0 && !bad) {
-        bad = 1;
-        err = errno;
-    }
-    if (bad)
-        fprintf(stderr, "fsi run: cannot write %s: %s\n", path,
-                err ? strerror(err) : "write error");
-    return bad ? -1 : 0;
+    int err = fsi_fclose_checked(log);
+    if (err)
+        fprintf(stderr, "fsi run: cannot write %s: %s\n", path, strerror(err));
+    return err ? -1 : 0;
 }
 
 static int write_log_header(const char *path, int argc, char **argv, int64_t run_id,
