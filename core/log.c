@@ -5,6 +5,7 @@
 #include <string.h>
 
 static char log_name[64] = "fsi";
+static int write_errno; /* errno of the first message that could not be written */
 
 void fsi_log_set_name(const char *name)
 {
@@ -21,7 +22,16 @@ static void log_line(const char *level, const char *fmt, va_list ap)
     char line[2048];
     vsnprintf(line, sizeof line, fmt, ap);
     /* One fprintf per line so lines of different processes do not interleave. */
-    fprintf(stderr, "[%s] %s%s\n", log_name, level, line);
+    errno = 0;
+    /* The flush matters only if stderr was made buffered (freopen). */
+    if ((fprintf(stderr, "[%s] %s%s\n", log_name, level, line) < 0 || fflush(stderr) != 0) &&
+        !write_errno)
+        write_errno = errno ? errno : EIO;
+}
+
+int fsi_log_write_error(void)
+{
+    return write_errno;
 }
 
 void fsi_info(const char *fmt, ...)

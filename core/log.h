@@ -14,6 +14,10 @@ void fsi_info(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
 void fsi_warn(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
 void fsi_error(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
 
+/* 0, or the errno of the first message that could not be written to stderr (under
+ * fsi run: the process's OUT/<role>.log, e.g. on a full disk). */
+int fsi_log_write_error(void);
+
 /* Flushes and closes a file written with stdio. Returns 0, or the errno of the first
  * failed write (EIO when the system gave none): a full disk shows up here at the
  * latest. The file is closed either way. */

@@ -374,6 +374,12 @@ int fsi_ongoing(fsi_participant *p)
 {
     if (p->finished)
         return 0;
+    /* A run whose messages are lost is not a finished run (docs/output.md). */
+    if (fsi_log_write_error()) {
+        fsi_abort(p, "cannot write its log (stderr, %s/%s.log under fsi run): %s",
+                  fsi_output_dir(p), p->name, strerror(fsi_log_write_error()));
+        return 0;
+    }
     if (!p->registered) {
         p->registered = 1;
         send_register(p);

@@ -575,6 +575,10 @@ int main(void)
     }
     if (fsi_probes_csv_close(&c.probes) != 0)
         fail(&c, FSI_COUPLER_NAME, "%s", c.probes.error);
+    if (fflush(stdout) != 0 || ferror(stdout) || fsi_log_write_error())
+        fail(&c, FSI_COUPLER_NAME, "cannot write its log (stdout/stderr, %s/coupler.log "
+             "under fsi run): %s", c.env.out_dir,
+             strerror(fsi_log_write_error() ? fsi_log_write_error() : EIO));
     int summary = write_summary(&c);
     int status = !c.failed ? FSI_EXIT_OK
                  : c.failure_relayed ? FSI_EXIT_STOPPED_BY_PEER : FSI_EXIT_RUN_FAILURE;

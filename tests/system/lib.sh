@@ -47,6 +47,15 @@ h5_same() {
   done
 }
 
+# output_readable DIR NAME...: DIR/NAME.h5 and DIR/NAME.xmf are complete and every
+# frame they list reads back (tests/system/output_files_check.py). h5dump -H alone is
+# not enough: it exits 0 even when a frame file a link names is broken.
+output_readable() {
+  local dir="$1"
+  shift
+  /usr/bin/python3 "$FSI_SOURCE_DIR/tests/system/output_files_check.py" "$dir" "$@" >/dev/null
+}
+
 same_results() {
   local a="$1" b="$2"
   for f in solid fluid; do

@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
-# ParaView (pvbatch, Xdmf3 reader via OpenDataFile) opens a coupled run's output:
-# both participants' frames fall on the same times (the coupler sets them), with
-# the right particle counts, fields and initial positions.
+# ParaView (pvbatch: Xdmf3ReaderS via OpenDataFile, Xdmf3ReaderT and the legacy
+# XDMF reader) opens a coupled run's output: both participants' frames fall on the
+# same times (the coupler sets them), with the right particle counts, one vertex
+# cell per particle (cells == points, else nothing shows), fields and initial
+# positions.
 source "$(dirname "$0")/lib.sh"
 command -v pvbatch >/dev/null || fail "pvbatch not found; run launch/setup.sh"
 small_case case.ini 0.3
@@ -17,4 +19,4 @@ pvbatch "$check" run/solid.xmf --dim 2 --times "$times" --counts 50,50,50,50,50,
 pvbatch "$check" run/fluid.xmf --dim 2 --times "$times" --counts 50,50,50,50,50,50,50 \
   --fields force:vector,pressure:scalar --point 0:0=0,0.01 --value 0:force:0:1=0 \
   || fail "ParaView does not read the fluid's output as written"
-pass "ParaView reads both participants' series: 7 frames at the same times, 50 particles, all fields"
+pass "ParaView (3 readers) reads both participants' series: 7 frames at the same times, 50 particles and 50 cells, all fields"

@@ -37,6 +37,7 @@ for who in solid fluid; do
     for f in solid.h5 fluid.h5; do
       h5dump -H "$out/$f" >/dev/null || fail "$who/$sig: h5dump cannot read $f"
     done
+    output_readable "$out" solid fluid || fail "$who/$sig: a frame listed is not readable"
     grep -q "^exit = failure" "$out/run.log" || fail "$who/$sig: run.log has no exit reason"
     pass "$who/SIG$sig: stopped in $(printf %.1f "$took") s, exit $status, named: $(grep -m1 -o "participant '$who'[^;]*" "$out.txt" | head -c 120)"
   done
