@@ -22,6 +22,7 @@ echo "my notes" >forced/notes.log
 printf '\x89PNG user' >forced/photo.png
 mkdir forced/mine && echo keep >forced/mine/solid.h5
 : >forced/solid.xmf.tmp
+: >forced/c1_elastic_plate.png   # what `fsi main` adds to its run's folder
 : >forced/fluid.h5.tmp
 mkdir forced/fluid.frames forced/solid.frames
 : >forced/fluid.frames/000003.h5
@@ -45,7 +46,7 @@ for f in measurements.csv notes.log photo.png mine/solid.h5 solid.frames/my_note
   cmp -s "user_copy/$f" "forced/$f" || fail "--force removed or changed the user's $f"
 done
 [ "$(run_id forced)" != "$first_id" ] || fail "--force did not replace run.log"
-for f in solid.xmf.tmp fluid.h5.tmp fluid.frames solid.frames/000001.h5; do
+for f in solid.xmf.tmp fluid.h5.tmp c1_elastic_plate.png fluid.frames solid.frames/000001.h5; do
   [ ! -e "forced/$f" ] || fail "--force left the earlier run's $f"
 done
 h5dump -H forced/solid.h5 >/dev/null || fail "solid.h5 of the --force run unreadable"
