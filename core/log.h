@@ -30,7 +30,10 @@ enum {
     FSI_EXIT_BAD_INPUT = 2,
     /* A process that stops because another one aborted the run: never the culprit,
      * so the launcher can name the process that really failed. */
-    FSI_EXIT_STOPPED_BY_PEER = 3
+    FSI_EXIT_STOPPED_BY_PEER = 3,
+    /* A participant that stops because the coupler was silent for the watchdog
+     * timeout: the coupler, not it, stopped answering, and the launcher names it. */
+    FSI_EXIT_COUPLER_SILENT = 4
 };
 
 #endif

@@ -247,7 +247,7 @@ static void check_run_alive(fsi_participant *p)
         snprintf(why, sizeof why,
                  "coupler not heard for %.1f s (window %d, t = %.6g s): stopping", silent,
                  p->window, p->t);
-        die_with_run(why, FSI_EXIT_RUN_FAILURE);
+        die_with_run(why, FSI_EXIT_COUPLER_SILENT);
     }
 }
 

@@ -19,6 +19,7 @@
 #include "bus_replay.h"
 #include "case_file.h"
 #include "log.h"
+#include "output_folder.h"
 #include "private_network.h"
 #include "run_plan.h"
 #include "supervisor.h"
@@ -155,10 +156,11 @@ static int prepare_output(const replay_options *o, const fsi_case *c, char *out_
         fprintf(stderr, "fsi replay: the output folder must not be the recorded run's\n");
         return FSI_EXIT_BAD_INPUT;
     }
-    if (fsi_prepare_output_dir(out, o->common.force, "fsi replay") != 0)
+    /* The lock is held until this process ends: the descriptor stays open. */
+    if (fsi_claim_output_dir(out, o->common.force, "fsi replay") < 0)
         return FSI_EXIT_BAD_INPUT;
-    if (fsi_make_dirs(out) != 0 || !realpath(out, out_abs)) {
-        fprintf(stderr, "fsi replay: cannot create the output folder %s: %s\n", out,
+    if (!realpath(out, out_abs)) {
+        fprintf(stderr, "fsi replay: cannot resolve the output folder %s: %s\n", out,
                 strerror(errno));
         return FSI_EXIT_BAD_INPUT;
     }

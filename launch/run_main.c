@@ -22,6 +22,7 @@
 
 #include "case_file.h"
 #include "log.h"
+#include "output_folder.h"
 #include "private_network.h"
 #include "protocol.h"
 #include "run_plan.h"
@@ -306,12 +307,15 @@ int main(int argc, char **argv)
         snprintf(out, sizeof out, "%s", o.common.out_dir);
     else
         default_out_dir(o.case_path, out, sizeof out);
-    if (fsi_prepare_output_dir(out, o.common.force, "fsi run") != 0) {
+    /* Held until this process ends, through the namespace steps and the run. */
+    int lock = fsi_claim_output_dir(out, o.common.force, "fsi run");
+    if (lock < 0) {
         fsi_case_free(c);
         return FSI_EXIT_BAD_INPUT;
     }
-    if (fsi_make_dirs(out) != 0 || !realpath(out, out_abs)) {
-        fprintf(stderr, "fsi run: cannot create the output folder %s: %s\n", out, strerror(errno));
+    if (!realpath(out, out_abs)) {
+        fprintf(stderr, "fsi run: cannot resolve the output folder %s: %s\n", out,
+                strerror(errno));
         fsi_case_free(c);
         return FSI_EXIT_BAD_INPUT;
     }

@@ -1,13 +1,10 @@
 #include "run_plan.h"
 
-#include <dirent.h>
 #include <errno.h>
-#include <fnmatch.h>
 #include <libgen.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
 #include <unistd.h>
 
 #include "run_keys.h"
@@ -105,57 +102,4 @@ void fsi_plan_environment(participant_plan *p)
     p->env[1] = p->env_threads;
     p->env[2] = getenv("OMP_WAIT_POLICY") ? NULL : wait_policy;
     p->env[3] = NULL;
-}
-
-int fsi_make_dirs(const char *path)
-{
-    char buf[PATH_MAX];
-    snprintf(buf, sizeof buf, "%s", path);
-    for (char *p = buf + 1; *p; p++)
-        if (*p == '/') {
-            *p = '\0';
-            if (mkdir(buf, 0755) != 0 && errno != EEXIST)
-                return -1;
-            *p = '/';
-        }
-    return mkdir(buf, 0755) != 0 && errno != EEXIST ? -1 : 0;
-}
-
-/* What a run writes; --force removes only these, never anything else in DIR. */
-static int is_run_output(const char *name)
-{
-    static const char *const patterns[] = {"*.h5", "*.xmf", "*.xmf.tmp", "*.log", "*.png",
-                                           "probes.csv", "case.resolved.ini", "traffic.lcmlog",
-                                           "*.csv"};
-    for (size_t i = 0; i < sizeof patterns / sizeof patterns[0]; i++)
-        if (fnmatch(patterns[i], name, 0) == 0)
-            return 1;
-    return 0;
-}
-
-int fsi_prepare_output_dir(const char *dir, int force, const char *command)
-{
-    DIR *d = opendir(dir);
-    if (!d)
-        return errno == ENOENT ? 0 : -1;
-    int earlier = 0;
-    struct dirent *e;
-    while ((e = readdir(d))) {
-        if (!is_run_output(e->d_name))
-            continue;
-        if (!force) {
-            earlier = 1;
-            break;
-        }
-        char path[PATH_MAX + 256];
-        snprintf(path, sizeof path, "%s/%s", dir, e->d_name);
-        unlink(path);
-    }
-    closedir(d);
-    if (earlier) {
-        fprintf(stderr, "%s: %s holds results of an earlier run; use --force to replace "
-                        "them or --out to choose another folder\n", command, dir);
-        return -1;
-    }
-    return 0;
 }

@@ -1,5 +1,6 @@
 /* What `fsi run` and `fsi replay` share to start participants: the checked case,
- * each participant's program and its environment, the output folder. */
+ * each participant's program and its environment (the output folder:
+ * output_folder.h). */
 #ifndef FSI_RUN_PLAN_H
 #define FSI_RUN_PLAN_H
 
@@ -49,12 +50,5 @@ int fsi_plan_participant(const fsi_case *c, const char *role, int threads,
 
 /* Fills p->env: FSI_PARTICIPANT, OMP_NUM_THREADS and the OpenMP wait policy. */
 void fsi_plan_environment(participant_plan *p);
-
-/* Creates a folder and its parents. Returns 0 or -1 (errno set). */
-int fsi_make_dirs(const char *path);
-
-/* Refuses (-1, with a message under 'command') a folder holding an earlier run's
- * results unless 'force', which removes only those results. */
-int fsi_prepare_output_dir(const char *dir, int force, const char *command);
 
 #endif

@@ -7,6 +7,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/prctl.h>
 #include <sys/wait.h>
 #include <time.h>
 #include <unistd.h>
@@ -31,12 +32,18 @@ int fsi_supervisor_start(fsi_supervisor *s, const char *name, const char *progra
     if (s->n == 0)
         s->started = fsi_wall_seconds();
     fflush(NULL);
+    pid_t parent = getpid();
     pid_t pid = fork();
     if (pid < 0) {
         fsi_error("cannot start %s: %s", name, strerror(errno));
         return -1;
     }
     if (pid == 0) {
+        /* No process of a run outlives its supervisor (kill -9 of fsi run): the
+         * kernel kills this one when the supervisor dies, and if it died before the
+         * request was made, the parent is no longer the one that forked. */
+        if (prctl(PR_SET_PDEATHSIG, SIGKILL) != 0 || getppid() != parent)
+            _exit(FSI_EXIT_RUN_FAILURE);
         for (int i = 0; extra_env && extra_env[i]; i++)
             putenv(extra_env[i]);
         if (log_path) {
@@ -89,13 +96,67 @@ static int stopped_by_peer(const fsi_child *c)
     return WIFEXITED(c->status) && WEXITSTATUS(c->status) == FSI_EXIT_STOPPED_BY_PEER;
 }
 
+/* What /proc/PID/stat says of a process: "T: stopped", "R: running", ... */
+static void process_state(pid_t pid, char *buf, size_t len)
+{
+    char path[64], line[1024] = "";
+    snprintf(path, sizeof path, "/proc/%d/stat", (int)pid);
+    FILE *f = fopen(path, "r");
+    if (f) {
+        if (!fgets(line, sizeof line, f))
+            line[0] = '\0';
+        fclose(f);
+    }
+    /* "pid (comm) S ...": the state follows the last ')', comm may hold any byte */
+    const char *paren = strrchr(line, ')');
+    char state = paren && paren[1] == ' ' ? paren[2] : '?';
+    const char *text = state == 'T'   ? "stopped"
+                       : state == 't' ? "stopped by a debugger"
+                       : state == 'R' ? "running"
+                       : state == 'S' ? "sleeping"
+                       : state == 'D' ? "in uninterruptible wait"
+                                      : "state unknown";
+    snprintf(buf, len, "%c: %s", state, text);
+}
+
+static const fsi_child *find_coupler(const fsi_supervisor *s)
+{
+    for (int i = 0; i < s->n; i++)
+        if (s->child[i].is_coupler)
+            return &s->child[i];
+    return NULL;
+}
+
+/* A participant left because it heard nothing from the coupler: the coupler is
+ * named, with the state the kernel gives it (a SIGSTOPped one is alive but silent). */
+static void describe_silent_coupler(fsi_supervisor *s, const fsi_child *c, double now)
+{
+    const fsi_child *coupler = find_coupler(s);
+    char state[64];
+    if (coupler && coupler->running) {
+        process_state(coupler->pid, state, sizeof state);
+        snprintf(s->failure, sizeof s->failure,
+                 "the coupler (pid %d) stopped answering (state %s): participant '%s' "
+                 "(pid %d) heard nothing from it for its watchdog timeout and left after "
+                 "%.1f s", (int)coupler->pid, state, c->name, (int)c->pid, now - s->started);
+    } else {
+        snprintf(s->failure, sizeof s->failure,
+                 "participant '%s' (pid %d) heard nothing from the coupler, which had "
+                 "already ended, for its watchdog timeout and left after %.1f s",
+                 c->name, (int)c->pid, now - s->started);
+    }
+}
+
 static void describe_failure(fsi_supervisor *s, const fsi_child *c, double now)
 {
     char how[256];
     describe_end(c, how, sizeof how);
     if (stopped_by_peer(c))
         snprintf(how, sizeof how, "stopped because the run was aborted");
-    if (c->is_coupler)
+    if (!c->is_coupler && WIFEXITED(c->status) &&
+        WEXITSTATUS(c->status) == FSI_EXIT_COUPLER_SILENT)
+        describe_silent_coupler(s, c, now);
+    else if (c->is_coupler)
         snprintf(s->failure, sizeof s->failure, "the coupler (pid %d) %s after %.1f s",
                  (int)c->pid, how, now - s->started);
     else
@@ -156,6 +217,20 @@ static void stop_all(fsi_supervisor *s)
         nap();
 }
 
+static void describe_stop_signal(fsi_supervisor *s, int sig, double now)
+{
+    double after = now - s->started;
+    if (sig == SIGINT)
+        snprintf(s->failure, sizeof s->failure, "interrupted by the user (SIGINT) after %.1f s",
+                 after);
+    else if (sig == SIGHUP)
+        snprintf(s->failure, sizeof s->failure,
+                 "stopped by SIGHUP (hang-up: its terminal closed) after %.1f s", after);
+    else
+        snprintf(s->failure, sizeof s->failure, "stopped by signal %d (%s) after %.1f s", sig,
+                 strsignal(sig), after);
+}
+
 int fsi_supervisor_wait(fsi_supervisor *s, volatile int *interrupted)
 {
     double coupler_ended = -1.0;
@@ -165,6 +240,13 @@ int fsi_supervisor_wait(fsi_supervisor *s, volatile int *interrupted)
         fsi_child *c;
         int running = reap(s, &c);
         double now = fsi_wall_seconds();
+        /* Before what ended is judged: Ctrl-C or a closed terminal signals the
+         * whole process group, and the participants it killed are not the cause. */
+        if (interrupted && *interrupted) {
+            describe_stop_signal(s, *interrupted, now);
+            stop_all(s);
+            return 1;
+        }
         if (c) {
             if (stopped_by_peer(c)) {
                 if (!first_stopped) {
@@ -189,12 +271,6 @@ int fsi_supervisor_wait(fsi_supervisor *s, volatile int *interrupted)
         }
         if (running == 0)
             return 0;
-        if (interrupted && *interrupted) {
-            snprintf(s->failure, sizeof s->failure, "interrupted by the user after %.1f s",
-                     now - s->started);
-            stop_all(s);
-            return 1;
-        }
         if (coupler_ended >= 0 && now - coupler_ended > PARTICIPANT_EXIT_GRACE_S) {
             for (int i = 0; i < s->n; i++)
                 if (s->child[i].running && !s->child[i].is_helper) {
@@ -214,8 +290,7 @@ static volatile int *stop_flag;
 
 static void on_stop_signal(int sig)
 {
-    (void)sig;
-    *stop_flag = 1;
+    *stop_flag = sig;
 }
 
 void fsi_supervisor_catch_signals(volatile int *flag)
@@ -225,6 +300,7 @@ void fsi_supervisor_catch_signals(volatile int *flag)
     sa.sa_handler = on_stop_signal;
     sigaction(SIGINT, &sa, NULL);
     sigaction(SIGTERM, &sa, NULL);
+    sigaction(SIGHUP, &sa, NULL);
 }
 
 void fsi_supervisor_stop_helpers(fsi_supervisor *s)

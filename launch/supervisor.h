@@ -25,17 +25,21 @@ typedef struct {
 } fsi_supervisor;
 
 /* Starts program with the extra environment "NAME=value" strings (NULL-terminated);
- * stdout/stderr go to log_path, or stay on the terminal when it is NULL. */
+ * stdout/stderr go to log_path, or stay on the terminal when it is NULL. The kernel
+ * kills it (SIGKILL) when the calling process dies. */
 int fsi_supervisor_start(fsi_supervisor *s, const char *name, const char *program,
                          char *const argv[], char *const extra_env[], const char *log_path,
                          int is_coupler, int is_helper);
 
 /* Waits until the run ends: the coupler and every participant exited, or one of them
  * failed (then the rest are stopped). Returns 0 on success, 1 on failure with the
- * reason in s->failure. 'interrupted' is polled to stop early on Ctrl-C. */
+ * reason in s->failure: the process that failed, or the coupler when a participant
+ * left because it was silent (FSI_EXIT_COUPLER_SILENT). 'interrupted' is polled to
+ * stop early on Ctrl-C, SIGTERM or SIGHUP. */
 int fsi_supervisor_wait(fsi_supervisor *s, volatile int *interrupted);
 
-/* Makes SIGINT and SIGTERM set *flag, the 'interrupted' of fsi_supervisor_wait. */
+/* Makes SIGINT, SIGTERM and SIGHUP set *flag to the signal's number: the
+ * 'interrupted' of fsi_supervisor_wait, which then stops the run in order. */
 void fsi_supervisor_catch_signals(volatile int *flag);
 
 /* Stops the helper processes (SIGINT, then SIGKILL after a grace period). */

@@ -72,3 +72,23 @@ log_stat() {
     $0 == p {inside = 1; next} /^\[/ {inside = 0}
     inside && $1 == n {print $3; exit}' "$log"
 }
+
+# Pids of the processes `fsi run` started for the output folder DIR (coupler,
+# participants, recorder), found by the FSI_OUT of their environment: processes of
+# other runs on the machine are never matched.
+run_pids() {
+  local dir
+  dir="$(cd "$1" && pwd -P)"
+  grep -lsxzF "FSI_OUT=$dir" /proc/[0-9]*/environ 2>/dev/null | cut -d/ -f3 || true
+}
+
+# Waits until the run writing DIR is under way (a few probe rows); fails otherwise.
+wait_under_way() {
+  local dir="$1" rows=0
+  for _ in $(seq 150); do
+    rows=$( { wc -l <"$dir/probes.csv"; } 2>/dev/null || echo 0)
+    [ "$rows" -gt 3 ] && return 0
+    sleep 0.1
+  done
+  fail "the run into $dir did not get under way"
+}
