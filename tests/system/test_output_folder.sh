@@ -24,7 +24,7 @@ mkdir forced/mine && echo keep >forced/mine/solid.h5
 : >forced/solid.xmf.tmp
 : >forced/c1_elastic_plate.png   # what `fsi main` adds to its run's folder
 : >forced/fluid.h5.tmp
-mkdir forced/fluid.frames forced/solid.frames
+mkdir -p forced/fluid.frames forced/solid.frames
 : >forced/fluid.frames/000099.h5   # frame numbers and a count the new run does not write
 : >forced/fluid.frames/static.h5
 : >forced/fluid.frames/vertices_77.h5
