@@ -1,5 +1,6 @@
 /* docs/cases.md from a case schema (see fsi_case_schema_markdown in case_file.h).
  * Kept apart from the reader: it only walks the key tables and writes text. */
+#include "case_check.h"
 #include "case_file.h"
 #include "case_file_internal.h"
 #include "dim.h"
@@ -178,6 +179,23 @@ void fsi_case_schema_markdown(const fsi_case_schema *schema, FILE *out)
           "`.` before the `=` and the section everything before that `.`, so "
           "`--set \"solid.block beam.max=1,0.2\"` sets `max` in `[solid.block beam]`. This "
           "reference is generated from the key tables in the code.\n", out);
+    /* The bounds of case_check.h; the checks are the solvers' and fsi_run_keys_check. */
+    fprintf(out, "\n## Time steps\n\n"
+            "Besides each key's own range, `fsi run` (and `--check`) estimates from the case "
+            "the step every part will take: the coupling window (the shortest of "
+            "`max_window` and a positive `probe_interval`), the fluid's step at rest (the "
+            "acoustic limit cfl_acoustic h / c0 or the viscous limit cfl_viscous rho0 h^2 / "
+            "mu, with c0 from 000 Eq. 7 when derived; a moving fluid only shortens it) and "
+            "the solid's sub-step (time_step_safety dx / sqrt(M / rho), the lattice bound of "
+            "the solid's stable step, which the model's step never exceeds). A case is "
+            "refused when one of them is below %g s or not a normal number (sound in steel "
+            "crosses a micrometre in 2e-10 s: such a step comes from a value far outside its "
+            "physical range), or when `end_time` would take more than %.0e of them (at the "
+            "rates of docs/performance.md, days of wall time even for a hundred particles). "
+            "The message names the step, its inputs with their values, and the key whose "
+            "value shortens it most against an ordinary case (water, c0 below water's 1480 "
+            "m/s, millimetre spacing, the default factors, a steel-stiff solid).\n",
+            FSI_MIN_STEP, FSI_MAX_STEPS);
     for (int i = 0; i < schema->n_sections; i++) {
         const fsi_key_table *t = &schema->sections[i];
         fprintf(out, "\n## [%s]\n\n", t->name);

@@ -14,8 +14,14 @@ void fsi_progress_init(fsi_progress *p, FILE *out, double interval, double t_end
     p->tty = isatty(fileno(out));
 }
 
-static void format_duration(char *buf, size_t len, double s)
+void fsi_duration_text(char *buf, size_t len, double s)
 {
+    /* Checked before the conversion: a long cannot hold every double (a run that has
+     * barely started extrapolates to 1e300 s, which wrapped to a negative ETA). */
+    if (!(s >= 0.0) || !(s < FSI_PROGRESS_MAX_SECONDS)) {
+        snprintf(buf, len, "--:--:--");
+        return;
+    }
     long total = (long)(s + 0.5);
     snprintf(buf, len, "%ld:%02ld:%02ld", total / 3600, (total / 60) % 60, total % 60);
 }
@@ -30,9 +36,9 @@ void fsi_progress_update(fsi_progress *p, double t, long windows, int force)
     double fraction = p->t_end > 0 ? t / p->t_end : 1.0;
     char eta[32] = "--:--:--";
     if (fraction > 0)
-        format_duration(eta, sizeof eta, elapsed * (1.0 - fraction) / fraction);
+        fsi_duration_text(eta, sizeof eta, elapsed * (1.0 - fraction) / fraction);
     char spent[32];
-    format_duration(spent, sizeof spent, elapsed);
+    fsi_duration_text(spent, sizeof spent, elapsed);
     fprintf(p->out, "%st = %.6g s / %.6g s (%5.1f %%) | %ld windows, %.0f windows/s | elapsed %s, ETA %s%s",
             p->tty ? "\r" : "", t, p->t_end, 100.0 * fraction, windows, rate, spent, eta,
             p->tty ? "   " : "\n");

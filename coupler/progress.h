@@ -3,6 +3,7 @@
 #ifndef FSI_PROGRESS_H
 #define FSI_PROGRESS_H
 
+#include <stddef.h>
 #include <stdio.h>
 
 typedef struct {
@@ -14,6 +15,14 @@ typedef struct {
     long windows_last;
     int tty;
 } fsi_progress;
+
+/* Durations from this on (a thousand hours) are not worth a number: the ETA of a run
+ * that has barely started. */
+#define FSI_PROGRESS_MAX_SECONDS 3.6e6
+
+/* "H:MM:SS" of s seconds into buf, or "--:--:--" when s is negative, not a number or
+ * at least FSI_PROGRESS_MAX_SECONDS. */
+void fsi_duration_text(char *buf, size_t len, double s);
 
 void fsi_progress_init(fsi_progress *p, FILE *out, double interval, double t_end);
 /* Prints when the interval has passed (or always when force is set). */

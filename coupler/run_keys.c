@@ -1,8 +1,10 @@
 /* The [run] section: time, windows, output cadence and liveness (docs/cases.md). */
 #include "run_keys.h"
 
+#include <math.h>
 #include <string.h>
 
+#include "case_check.h"
 #include "protocol.h"
 
 static const fsi_key_spec run_keys[] = {
@@ -68,6 +70,26 @@ int fsi_run_keys_check(const fsi_case *c, FILE *errors)
                 at && strcmp(at, "default") != 0 ? at : fsi_case_path(c), output, end / output,
                 end);
         n++;
+    }
+    /* Windows end on probe times too (and on frame times, whose count is bounded
+     * above): the shorter of the two bounds the window, and every window is at least
+     * one step of every participant. */
+    static const struct {
+        const char *key;
+        double reference;   /* the key's default */
+    } window_keys[] = {{"max_window", 1e-3}, {"probe_interval", 1e-3}};
+    fsi_step_factor shortest = {"run", NULL, INFINITY, 1.0, 1.0};
+    for (size_t i = 0; i < sizeof window_keys / sizeof window_keys[0]; i++) {
+        const double v = fsi_case_get_real(c, "run", window_keys[i].key, 0.0);
+        if (v > 0.0 && v < shortest.value)
+            shortest = (fsi_step_factor){"run", window_keys[i].key, v, window_keys[i].reference,
+                                         1.0};
+    }
+    if (shortest.key) {
+        fsi_case_checker k = {c, errors, 0};
+        char what[128];
+        snprintf(what, sizeof what, "the coupling window (%s)", shortest.key);
+        n += fsi_case_check_step(&k, shortest.value, what, &shortest, 1);
     }
     return n;
 }

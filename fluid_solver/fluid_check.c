@@ -10,6 +10,7 @@
 #include "fluid_geometry.h"
 #include "fluid_keys.h"
 #include "fluid_periodic.h"
+#include "fluid_step.h"
 
 static const char axis_name[3] = {'x', 'y', 'z'};
 
@@ -101,6 +102,47 @@ static void check_sound_speed(fsi_case_checker *k, const char *role)
                 "velocity or pressure");
 }
 
+/* The step of the fluid at rest (fluid_step.h: every later step is shorter) against
+ * FSI_MIN_STEP and FSI_MAX_STEPS up to end_time; the message names the input of the
+ * binding limit farthest from an ordinary case (water, c0 below water's 1480 m/s,
+ * millimetre spacing, the default CFL factors). */
+static void check_step(fsi_case_checker *k, const char *role)
+{
+    fluid_step_limits l;
+    fluid_step_limits_read(&l, k->c, role);
+    if (!(l.sound_speed > 0.0))
+        return;     /* check_sound_speed says why */
+    const double dx = fsi_case_get_real(k->c, role, "spacing", 0.0);
+    const double sf = fsi_case_get_real(k->c, role, "smoothing_factor", 1.2);
+    const double acoustic = fluid_acoustic_step(&l, 0.0), viscous = fluid_viscous_step(&l);
+    char what[256];
+    if (acoustic <= viscous) {
+        const char *c0_key = "sound_speed";
+        if (!(fsi_case_get_real(k->c, role, "sound_speed", 0.0) > 0.0))
+            c0_key = fsi_case_get_real(k->c, role, "max_velocity", 0.0) >=
+                             sqrt(fsi_case_get_real(k->c, role, "max_pressure", 0.0) / l.density)
+                         ? "max_velocity"
+                         : "max_pressure";
+        const fsi_step_factor f[] = {{role, c0_key, l.sound_speed, 1480.0, -1.0},
+                                     {role, "spacing", dx, 1e-3, 1.0},
+                                     {role, "smoothing_factor", sf, 1.2, 1.0},
+                                     {role, "cfl_acoustic", l.cfl_acoustic, 0.25, 1.0}};
+        snprintf(what, sizeof what, "the fluid's acoustic step limit cfl_acoustic h / c0 = "
+                 "%g * %g m / %g m/s", l.cfl_acoustic, l.h, l.sound_speed);
+        fsi_case_check_step(k, acoustic, what, f, (int)(sizeof f / sizeof f[0]));
+    } else {
+        const fsi_step_factor f[] = {{role, "viscosity", l.viscosity, 1e-3, -1.0},
+                                     {role, "density", l.density, 1000.0, 1.0},
+                                     {role, "spacing", dx, 1e-3, 2.0},
+                                     {role, "smoothing_factor", sf, 1.2, 2.0},
+                                     {role, "cfl_viscous", l.cfl_viscous, 0.125, 1.0}};
+        snprintf(what, sizeof what, "the fluid's viscous step limit cfl_viscous rho0 h^2 / mu "
+                 "= %g * %g kg/m^3 * (%g m)^2 / %g Pa s", l.cfl_viscous, l.density, l.h,
+                 l.viscosity);
+        fsi_case_check_step(k, viscous, what, f, (int)(sizeof f / sizeof f[0]));
+    }
+}
+
 /* The period box: given, longer than three supports (the neighbour grid needs three
  * cells per period), a whole number of spacings (the lattice continues across the
  * boundary), and every box inside it along the periodic axes. */
@@ -162,6 +204,7 @@ int fluid_geometry_check(const fsi_case *c, const char *role, FILE *errors)
     check_probes(&k, &g);
     check_motion(&k, &g);
     check_sound_speed(&k, role);
+    check_step(&k, role);
     check_periodic(&k, &g, role);
     fluid_geometry_free(&g);
     return k.errors;

@@ -19,9 +19,14 @@ static const fsi_key_spec common_keys[] = {
      "Initial particle spacing dx: blocks and walls are filled with particles at "
      "min + (i + 1/2) dx, each of volume dx^DIM, so every box must be a whole number of "
      "spacings long."},
-    {"density", FSI_KEY_REAL, "kg/m^3", "1000", FSI_BOUND_MIN_OPEN, 0, 0, NULL,
+    /* Ranges of physics, not of the machine (the step they give is checked apart,
+     * fluid_check.c): from thin gases (air at 30 km: 0.02 kg/m^3) to four times the
+     * densest element (osmium, 22590 kg/m^3); up to ten million times water's viscosity,
+     * beyond molasses and honey (10-100 Pa s): stiffer pastes and melts are no weakly
+     * compressible Newtonian liquid. */
+    {"density", FSI_KEY_REAL, "kg/m^3", "1000", FSI_BOUND_MIN | FSI_BOUND_MAX, 1e-3, 1e5, NULL,
      "Reference density rho0 of the fluid (000 Eq. 6)."},
-    {"viscosity", FSI_KEY_REAL, "Pa s", "1e-3", FSI_BOUND_MIN, 0, 0, NULL,
+    {"viscosity", FSI_KEY_REAL, "Pa s", "1e-3", FSI_BOUND_MIN | FSI_BOUND_MAX, 0, 1e4, NULL,
      "Dynamic viscosity mu of the Newtonian viscous stress tau = 2 mu e' (000 Eqs. 4-5); "
      "the physical value (water: 1e-3)."},
     {"sound_speed", FSI_KEY_REAL, "m/s", "0", FSI_BOUND_MIN, 0, 0, NULL,

@@ -25,9 +25,11 @@
 #include "dim.h"
 #include "fluid_coupling.h"
 #include "fluid_geometry.h"
+#include "fluid_leak.h"
 #include "fluid_periodic.h"
 #include "fluid_probes.h"
 #include "fluid_scheme.h"
+#include "fluid_step.h"
 #include "grow.h"
 #include "fluid_wall_motion.h"
 #include "h5_output.h"
@@ -47,6 +49,15 @@
 /* The energy check's floor in units of M c0^2: kinetic energy below it is noise of
  * the weak compressibility, not an instability. */
 #define ENERGY_FLOOR 1e-6
+/* Mach number Ma = |v|max / c0 of the fastest fluid particle. 000 Eq. 7 sets
+ * c0 = 10 U_max, Ma = 0.1, because the density error of a weakly compressible fluid
+ * grows as Ma^2 (1 % there). At 0.3 it is about 10 %: the pressure is no longer that of
+ * a nearly incompressible liquid, so the run warns (once). At 1 the fluid outruns its
+ * own pressure waves, which then cannot keep it out of walls or off other particles (F1
+ * at c0 = 1 m/s, Ma 2.6: water fell through the floor): the method is invalid and
+ * the run stops. */
+#define MACH_WARN 0.3
+#define MACH_STOP 1.0
 
 typedef struct {
     const fsi_case *c;
@@ -58,6 +69,8 @@ typedef struct {
     fluid_probes probes;
     fluid_wall_motion motion;
     fluid_coupling coupling;    /* the solid's particles at the tail of p (000 §3) */
+    fluid_leak leak;            /* fluid particles that cross a wall (fluid_leak.h) */
+    int mach_warned;            /* MACH_WARN was passed and said */
     int n_fixed;        /* fluid and wall particles of the case, before that tail */
     double t;           /* time of the current state (walls are put there) */
     double wall_work;   /* work of the moving walls on the fluid so far [J] */
@@ -95,6 +108,7 @@ static void free_run(fluid_run *s)
     fluid_probes_free(&s->probes);
     fluid_wall_motion_free(&s->motion);
     fluid_coupling_free(&s->coupling);
+    fluid_leak_free(&s->leak);
     fluid_particles_free(&s->p);
     free(s->order);
     fluid_geometry_free(&s->geometry);
@@ -142,18 +156,6 @@ static double potential_energy(const fluid_particles *p, const double *gravity)
         if (p->flags[i] & FLUID_PARTICLE_FLUID)
             e -= p->mass[i] * fsi_vec_dot(gravity, &p->x[i * FSI_DIM]);
     return e;
-}
-
-/* c0 from the case, or 000 Eq. 7: c0 = 10 max(sqrt(p_max / rho0), U_max), which keeps
- * the density within about 1 % of rho0. */
-static double sound_speed(const fsi_case *c, double rho0)
-{
-    double c0 = fsi_case_get_real(c, ROLE, "sound_speed", 0.0);
-    if (c0 > 0.0)
-        return c0;
-    double u_max = fsi_case_get_real(c, ROLE, "max_velocity", 0.0);
-    double p_max = fsi_case_get_real(c, ROLE, "max_pressure", 0.0);
-    return 10.0 * fmax(sqrt(p_max / rho0), u_max);
 }
 
 /* initial_pressure = hydrostatic: p = rho0 |g| depth, the depth below the corner of the
@@ -276,6 +278,12 @@ static int reorder_particles(fluid_run *s)
         return -1;
     }
     const int *sorted = grid.sorted;
+    if (fluid_leak_reorder(&s->leak, sorted) != 0) {
+        free(scratch);
+        free(inverse);
+        fsi_grid_free(&grid);
+        return -1;
+    }
     const size_t vec = FSI_DIM * sizeof(double);
     permute_rows(p->id, sorted, n, sizeof *p->id, scratch);
     permute_rows(p->x, sorted, n, vec, scratch);
@@ -308,7 +316,7 @@ static int setup(fluid_run *s, fsi_participant *part)
     fluid_properties *pr = &s->props;
     pr->density = fsi_case_get_real(c, ROLE, "density", 1000.0);
     pr->viscosity = fsi_case_get_real(c, ROLE, "viscosity", 1e-3);
-    pr->sound_speed = sound_speed(c, pr->density);
+    pr->sound_speed = fluid_sound_speed(c, ROLE, pr->density);
     pr->tait_exponent = fsi_case_get_real(c, ROLE, "tait_exponent", 7.0);
     if (fsi_case_get_vector(c, ROLE, "gravity", pr->gravity) != 0)
         memset(pr->gravity, 0, sizeof pr->gravity);
@@ -351,6 +359,11 @@ static int setup(fluid_run *s, fsi_participant *part)
     if (fluid_probes_init(&s->probes, &s->geometry, part, s->msg, ms) != 0)
         return -1;
     fsi_escape_box(p->x, p->n, ESCAPE_DIAGONALS, p->spacing, s->box_min, s->box_max);
+    if (fluid_leak_init(&s->leak, &s->geometry, &pr->periodic, fluid_scheme_support(s->scheme),
+                        p, s->n_fixed, 0.0) != 0) {
+        snprintf(s->msg, ms, "out of memory for the leak check of %d particles", p->n);
+        return -1;
+    }
     fluid_wall_motion_widen(&s->motion, s->box_min, s->box_max);
     if (evaluate(s) != 0)
         return -1;
@@ -411,6 +424,28 @@ static int check_finite(fluid_run *s, double t, int window)
         }
     }
     return 0;
+}
+
+static const char axis_name[3] = {'x', 'y', 'z'};
+
+/* A fluid particle that went through a wall after a step (fluid_leak.h). */
+static int check_leak(fluid_run *s, int window)
+{
+    fluid_leak_crossing c;
+    if (!fluid_leak_check(&s->leak, &s->p, s->t, &c))
+        return 0;
+    const fluid_box *wall = &s->geometry.boxes[c.box];
+    char at[128];
+    snprintf(s->msg, sizeof s->msg, "particle %d leaked through [%s]: it went from %s the wall "
+             "to %s it along %c, now at %s, %.6g m past its face %c = %.9g m (more than one "
+             "kernel support, %.3g m), at t = %.9g s (window %d, step %ld); the walls no "
+             "longer hold the fluid (a sound speed too low for the flow, or walls too thin)",
+             s->p.id[c.particle], wall->section, c.upward ? "below" : "above",
+             c.upward ? "above" : "below", axis_name[c.axis],
+             where_text(s, c.particle, at, sizeof at),
+             fabs(s->p.x[c.particle * FSI_DIM + c.axis] - c.face), axis_name[c.axis], c.face,
+             s->leak.tolerance, s->t, window, s->steps);
+    return -1;
 }
 
 /* Fluid particles back into the period box. The potential energy of the energy check
@@ -527,11 +562,48 @@ static int advance(fluid_run *s, double t0, double dt, int window)
         if (m < 1)
             m = 1;
         const double h = m == 1 ? remaining : remaining / (double)m;
-        if (step(s, h) != 0 || check_finite(s, s->t, window) != 0)
+        if (step(s, h) != 0 || check_finite(s, s->t, window) != 0 || check_leak(s, window) != 0)
             return -1;
         if (m == 1)
             s->t = t_end;
     }
+    return 0;
+}
+
+/* The Mach number of the fastest fluid particle after a window: a warning past
+ * MACH_WARN (once), a stop past MACH_STOP. */
+static int check_mach(fluid_run *s, double t, int window)
+{
+    const fluid_particles *p = &s->p;
+    double vmax = 0.0;
+    int fastest = -1;
+    for (int i = 0; i < s->n_fixed; i++)
+        if (p->flags[i] & FLUID_PARTICLE_FLUID) {
+            const double v = fsi_vec_norm(&p->v[i * FSI_DIM]);
+            if (v > vmax) {
+                vmax = v;
+                fastest = i;
+            }
+        }
+    const double c0 = s->props.sound_speed, mach = vmax / c0;
+    if (fastest < 0 || mach <= MACH_WARN)
+        return 0;
+    char at[128];
+    where_text(s, fastest, at, sizeof at);
+    if (mach > MACH_STOP) {
+        snprintf(s->msg, sizeof s->msg, "particle %d at %s moves at %.4g m/s, Mach %.3g against "
+                 "c0 = %g m/s, at t = %.9g s (window %d): a fluid faster than its sound speed is "
+                 "outside the weakly compressible method (000 Eq. 7 asks for Mach 0.1: raise "
+                 "sound_speed or max_velocity)", p->id[fastest], at, vmax, mach, c0, t, window);
+        return -1;
+    }
+    if (!s->mach_warned)
+        fsi_warn("particle %d at %s moves at %.4g m/s, Mach %.3g against c0 = %g m/s, at "
+                 "t = %.9g s (window %d): above %g the density errors of the weakly "
+                 "compressible fluid (~ Mach^2) pass 10 %% (000 Eq. 7 asks for Mach 0.1: raise "
+                 "sound_speed or max_velocity)", p->id[fastest], at, vmax, mach, c0, t, window,
+                 MACH_WARN);
+    s->mach_warned = 1;
     return 0;
 }
 
@@ -550,6 +622,8 @@ static int check_health(fluid_run *s, double t, int window)
                  t, window);
         return -1;
     }
+    if (check_mach(s, t, window) != 0)
+        return -1;
     /* Without inflow K + P + E_c = K0 + P0 + E_c0 - (dissipation), with the potential
      * energy P and the compression energy E_c >= 0, so K(t) <= K0 + E_c0 + (P0 - P(t));
      * an unstable integration makes energy from nothing. */

@@ -64,6 +64,9 @@ double fluid_scheme_stable_dt(const fluid_scheme *s, const fluid_particles *p, d
 
 /* Smoothing length h [m] (probes and messages). */
 double fluid_scheme_smoothing_length(const fluid_scheme *s);
+/* Support radius [m]: how far a particle's neighbours reach (the leak check's
+ * tolerance). */
+double fluid_scheme_support(const fluid_scheme *s);
 
 /* Gradient of the pressure (000 Eq. 13) of every particle from the last rates call,
  * grad[n * FSI_DIM]. */

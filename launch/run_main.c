@@ -230,6 +230,25 @@ static void print_log_tail(const char *path)
         fputs(lines[i % 10], stderr);
 }
 
+/* The warnings of a participant's log (at most a few), repeated on stderr after a run
+ * that finished: a run can end well and still have left its method's range (a Mach
+ * number past the weakly compressible one, fluid inside the solid). */
+static void print_log_warnings(const char *path)
+{
+    enum { MAX_SHOWN = 5 };
+    FILE *f = fopen(path, "r");
+    if (!f)
+        return;
+    char line[1024];
+    int n = 0;
+    while (fgets(line, sizeof line, f))
+        if (strstr(line, "] warning: ") && n++ < MAX_SHOWN)
+            fprintf(stderr, "fsi run: %s: %s", path, line);
+    if (n > MAX_SHOWN)
+        fprintf(stderr, "fsi run: %s: %d warnings in all\n", path, n);
+    fclose(f);
+}
+
 static int wait_for_file(const char *path, double seconds)
 {
     double deadline = fsi_wall_seconds() + seconds;
@@ -384,6 +403,10 @@ int main(int argc, char **argv)
         }
         fprintf(stderr, "fsi run: output written so far is in %s\n", out_abs);
         return FSI_EXIT_RUN_FAILURE;
+    }
+    for (int i = 0; i < n_plan; i++) {
+        snprintf(path, sizeof path, "%s/%s.log", out_abs, plan[i].role);
+        print_log_warnings(path);
     }
     if (append_log(log_path, "\nexit = ok (%.2f s wall)\n", wall) != 0) {
         fprintf(stderr, "fsi run: run failed: cannot record its end in %s\n", log_path);

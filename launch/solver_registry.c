@@ -36,11 +36,12 @@ static const fsi_key_table *const ulph_tables[] = {&fsi_fluid_common_keys, &fsi_
 
 #define N_TABLES(a) ((int)(sizeof(a) / sizeof((a)[0])))
 
-/* Every solid model's semantic check: the geometry, then the material's cross-key
- * rules (both write one line per problem). */
+/* Every solid model's semantic check: the geometry, the material's cross-key rules,
+ * then the sub-step they give (each writes one line per problem). */
 static int solid_model_check(const fsi_case *c, const char *role, FILE *errors)
 {
-    return solid_geometry_check(c, role, errors) + material_case_check(c, role, errors);
+    int n = solid_geometry_check(c, role, errors) + material_case_check(c, role, errors);
+    return n + solid_step_check(c, role, errors);
 }
 
 static const fsi_solver_spec solvers[] = {

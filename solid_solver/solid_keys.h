@@ -46,4 +46,9 @@ extern const int fsi_solid_n_object_kinds;
  * solid_check.c; it builds no particles, only counts lattice points. */
 int solid_geometry_check(const fsi_case *c, const char *role, FILE *errors);
 
+/* The solid's sub-step estimated from the case (time_step_safety times the material's
+ * lattice bound) against FSI_MIN_STEP and FSI_MAX_STEPS up to end_time (case_check.h).
+ * One line per problem on 'errors'; returns how many. Defined in solid_step_check.c. */
+int solid_step_check(const fsi_case *c, const char *role, FILE *errors);
+
 #endif

@@ -14,6 +14,7 @@
 #include <string.h>
 
 #include "fluid_scheme.h"
+#include "fluid_step.h"
 #include "grow.h"
 #include "neighbour_grid.h"
 #include "small_tensor.h"
@@ -40,7 +41,7 @@ struct fluid_scheme {
     ulph_momentum_scratch scratch;
     const unsigned char *free_slip;
     double *velocity_for_viscosity, *filtered, *density_gradient;
-    double cfl_acoustic, cfl_viscous, cfl_force;
+    fluid_step_limits step;     /* h, c0, rho0, mu and the CFL factors */
     long filter_interval;
     int filter_due;
     int tension;
@@ -121,9 +122,12 @@ fluid_scheme *fluid_scheme_create(const fsi_case *c, const char *role,
     s->momentum.spacing = p->spacing;
     memcpy(s->momentum.gravity, props->gravity, sizeof s->momentum.gravity);
     s->free_slip = props->free_slip;
-    s->cfl_acoustic = fsi_case_get_real(c, role, "cfl_acoustic", 0.25);
-    s->cfl_viscous = fsi_case_get_real(c, role, "cfl_viscous", 0.125);
-    s->cfl_force = fsi_case_get_real(c, role, "cfl_force", 0.25);
+    /* The case check estimates the step with the same limits (fluid_step.h). */
+    fluid_step_limits_read(&s->step, c, role);
+    s->step.h = s->kernel.h;
+    s->step.sound_speed = props->sound_speed;
+    s->step.density = props->density;
+    s->step.viscosity = props->viscosity;
     s->filter_interval = fsi_case_get_int(c, role, "density_filter_interval", 20);
     s->tension = fsi_case_get_bool(c, role, "tension", 0);
     s->skin = fsi_case_get_real(c, role, "neighbour_skin", ULPH_VERLET_SKIN) * s->kernel.support;
@@ -164,6 +168,11 @@ double fluid_scheme_density(const fluid_scheme *s, double pressure)
 double fluid_scheme_smoothing_length(const fluid_scheme *s)
 {
     return s->kernel.h;
+}
+
+double fluid_scheme_support(const fluid_scheme *s)
+{
+    return s->kernel.support;
 }
 
 static void fluid_state(const fluid_scheme *s, fluid_particles *p)
@@ -276,17 +285,11 @@ void fluid_scheme_after_step(fluid_scheme *s, fluid_particles *p, long count)
 
 double fluid_scheme_stable_dt(const fluid_scheme *s, const fluid_particles *p, double amax)
 {
-    const double h = s->kernel.h;
     double vmax = 0.0;
     for (int i = 0; i < p->n; i++)
         if (p->flags[i] & FLUID_PARTICLE_FLUID)
             vmax = fmax(vmax, fsi_vec_norm(&p->v[i * FSI_DIM]));
-    double dt = s->cfl_acoustic * h / (s->eos.c0 + vmax);
-    if (s->momentum.viscosity > 0.0)
-        dt = fmin(dt, s->cfl_viscous * s->eos.rho0 * h * h / s->momentum.viscosity);
-    if (amax > 0.0)
-        dt = fmin(dt, s->cfl_force * sqrt(h / amax));
-    return dt;
+    return fluid_stable_step(&s->step, vmax, amax);
 }
 
 void fluid_scheme_pressure_gradient(const fluid_scheme *s, const fluid_particles *p,

@@ -43,6 +43,11 @@ double material_wave_modulus(const material *m)
     return m->lame_lambda + 2.0 * m->shear_modulus;
 }
 
+double material_wave_crossing_time(const material *m, double density, double dx)
+{
+    return dx / sqrt(material_wave_modulus(m) / density);
+}
+
 double material_i1(const double s[6])
 {
     return s[0] + s[1] + s[2];

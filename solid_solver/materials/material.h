@@ -58,6 +58,11 @@ void material_update(const material *m, double deps[6], double stress[6], materi
  * sqrt(M / rho) sets the stable step. */
 double material_wave_modulus(const material *m);
 
+/* dx / sqrt(M / rho): the time a P wave takes to cross one lattice spacing, the
+ * lattice bound of every explicit particle solid's stable step (NOSB-PD's
+ * nosbpd_model.c, and the case check's estimate of it, solid_check.c). */
+double material_wave_crossing_time(const material *m, double density, double dx);
+
 /* Case keys shared by solid models: density, youngs_modulus, poisson_ratio, plane,
  * constitutive, cohesion, friction_angle (degrees), dilation_angle (degrees). */
 extern const fsi_key_spec material_keys[];

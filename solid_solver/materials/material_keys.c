@@ -16,7 +16,10 @@ const fsi_key_spec material_keys[] = {
      "Constitutive model: linear_elastic (isotropic Hooke's law in the incremental "
      "objective update of 000 Eq. 43) or drucker_prager (perfectly plastic Drucker-Prager "
      "cone matched to Mohr-Coulomb in plane strain, docs/materials.md)."},
-    {"density", FSI_KEY_REAL, "kg/m^3", NULL, FSI_BOUND_MIN_OPEN, 0, 0, NULL,
+    /* From aerogels (1 kg/m^3) with room to spare to four times the densest element
+     * (osmium, 22590 kg/m^3): a range of physics; the step it gives is checked apart
+     * (solid_check.c). */
+    {"density", FSI_KEY_REAL, "kg/m^3", NULL, FSI_BOUND_MIN | FSI_BOUND_MAX, 1e-3, 1e5, NULL,
      "Mass density rho0 of the solid in its reference configuration."},
     {"youngs_modulus", FSI_KEY_REAL, "Pa", NULL, FSI_BOUND_MIN_OPEN, 0, 0, NULL,
      "Young's modulus E of the isotropic elastic response."},

@@ -114,7 +114,6 @@ static int read_keys(solid_model *m, const fsi_case *c, char *msg, size_t msg_si
 static double stable_step(const solid_model *m, const solid_particles *p)
 {
     const double c = nosbpd_micromodulus(&m->mat, m->delta);
-    const double wave = material_wave_modulus(&m->mat);
     const nosbpd_bonds *b = &m->bonds;
     double dt = INFINITY;
     for (int i = 0; i < m->n; i++) {
@@ -126,7 +125,7 @@ static double stable_step(const solid_model *m, const solid_particles *p)
         const double rho = p->density ? p->density[i] : m->mat.density;
         if (stiffness > 0.0)
             dt = fmin(dt, sqrt(2.0 * rho / stiffness));
-        dt = fmin(dt, m->dx / sqrt(wave / rho));
+        dt = fmin(dt, material_wave_crossing_time(&m->mat, rho, m->dx));
     }
     return dt;
 }

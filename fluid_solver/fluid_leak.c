@@ -1,0 +1,122 @@
+/* Fluid leaking through walls (fluid_leak.h). */
+#include "fluid_leak.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+enum { SIDE_UNKNOWN = 0, SIDE_BELOW = 1, SIDE_ABOVE = 2 };
+
+/* The wall box b at time t: where it is drawn, moved by its motion. */
+static void wall_at(const fluid_box *b, double t, double *lo, double *hi)
+{
+    double s[FSI_DIM];
+    fluid_motion_at(&b->motion, t, s, NULL, NULL);
+    for (int d = 0; d < FSI_DIM; d++) {
+        lo[d] = b->min[d] + s[d];
+        hi[d] = b->max[d] + s[d];
+    }
+}
+
+/* Updates the side of x against the wall [lo, hi] along every axis; returns the axis
+ * it crossed along (with *upward), or -1. */
+static int update_sides(const fluid_leak *l, const double *lo, const double *hi,
+                        const double *x, unsigned char *side, int *upward)
+{
+    int crossed = -1;
+    for (int d = 0; d < FSI_DIM; d++) {
+        if (l->periodic[d])
+            continue;
+        int shadow = 1;
+        for (int e = 0; e < FSI_DIM && shadow; e++)
+            shadow = e == d || l->periodic[e] || (x[e] >= lo[e] && x[e] <= hi[e]);
+        if (!shadow) {
+            side[d] = SIDE_UNKNOWN;
+        } else if (x[d] < lo[d]) {
+            if (side[d] == SIDE_ABOVE && x[d] < lo[d] - l->tolerance && crossed < 0) {
+                crossed = d;
+                *upward = 0;
+            } else if (side[d] != SIDE_ABOVE) {
+                side[d] = SIDE_BELOW;
+            }
+        } else if (x[d] > hi[d]) {
+            if (side[d] == SIDE_BELOW && x[d] > hi[d] + l->tolerance && crossed < 0) {
+                crossed = d;
+                *upward = 1;
+            } else if (side[d] != SIDE_BELOW) {
+                side[d] = SIDE_ABOVE;
+            }
+        }
+        /* Inside the wall's slab the side is kept. */
+    }
+    return crossed;
+}
+
+int fluid_leak_init(fluid_leak *l, const fluid_geometry *g, const fsi_periodic *per,
+                    double tolerance, const fluid_particles *p, int n, double t)
+{
+    memset(l, 0, sizeof *l);
+    l->geometry = g;
+    l->tolerance = tolerance;
+    for (int d = 0; d < FSI_DIM; d++)
+        l->periodic[d] = per && per->on[d];
+    for (int b = 0; b < g->n_boxes; b++)
+        l->n_walls += g->boxes[b].is_wall != 0;
+    l->n = n;
+    if (l->n_walls == 0)
+        return 0;
+    l->wall = malloc((size_t)l->n_walls * sizeof *l->wall);
+    l->side = calloc((size_t)(n > 0 ? n : 1) * (size_t)l->n_walls * FSI_DIM, 1);
+    if (!l->wall || !l->side) {
+        fluid_leak_free(l);
+        return -1;
+    }
+    for (int b = 0, w = 0; b < g->n_boxes; b++)
+        if (g->boxes[b].is_wall)
+            l->wall[w++] = b;
+    fluid_leak_crossing ignored;
+    fluid_leak_check(l, p, t, &ignored);     /* the sides at the start */
+    return 0;
+}
+
+int fluid_leak_check(fluid_leak *l, const fluid_particles *p, double t,
+                     fluid_leak_crossing *found)
+{
+    found->particle = -1;
+    for (int w = 0; w < l->n_walls; w++) {
+        const fluid_box *b = &l->geometry->boxes[l->wall[w]];
+        double lo[FSI_DIM], hi[FSI_DIM];
+        wall_at(b, t, lo, hi);
+        for (int i = 0; i < l->n; i++) {
+            if (!(p->flags[i] & FLUID_PARTICLE_FLUID))
+                continue;
+            unsigned char *side = &l->side[((size_t)i * l->n_walls + w) * FSI_DIM];
+            int upward = 0;
+            const int d = update_sides(l, lo, hi, &p->x[i * FSI_DIM], side, &upward);
+            if (d >= 0 && found->particle < 0)
+                *found = (fluid_leak_crossing){i, l->wall[w], d, upward, upward ? hi[d] : lo[d]};
+        }
+    }
+    return found->particle >= 0;
+}
+
+int fluid_leak_reorder(fluid_leak *l, const int *sorted)
+{
+    if (l->n_walls == 0)
+        return 0;
+    const size_t row = (size_t)l->n_walls * FSI_DIM;
+    unsigned char *side = malloc((size_t)(l->n > 0 ? l->n : 1) * row);
+    if (!side)
+        return -1;
+    for (int k = 0; k < l->n; k++)
+        memcpy(&side[(size_t)k * row], &l->side[(size_t)sorted[k] * row], row);
+    free(l->side);
+    l->side = side;
+    return 0;
+}
+
+void fluid_leak_free(fluid_leak *l)
+{
+    free(l->wall);
+    free(l->side);
+    memset(l, 0, sizeof *l);
+}

@@ -1,0 +1,62 @@
+/* Fluid leaking through walls: a fluid particle that passes through a [fluid.wall]
+ * box from one side to the other stops the run (the walls of 000 §2.3 are meant to
+ * hold the fluid; one it has crossed no longer does, and the water that fell through
+ * the floor of F1 at a too low c0 went unnoticed). Which sides of the domain are walled
+ * is not guessed: the check follows every fluid particle against every wall box and
+ * every axis d that is not periodic.
+ *
+ * A particle is in the wall's shadow along d when its other, non-periodic coordinates
+ * lie within the wall's extent (the box moved by its prescribed motion, fluid_motion.h);
+ * there it is below the wall (x_d < min_d), in it, or above it (x_d > max_d). A particle
+ * seen below the wall and then, without leaving the shadow, more than the tolerance
+ * (one kernel support) above it has gone through it, and the other way round; leaving
+ * the shadow forgets the side. So water that flows over the top of a wall, off the end
+ * of a floor or round a wall's end (an open-topped tank, a dam break onto an open
+ * floor, the gap under a gate) never counts, and neither does a particle that sinks
+ * into a wall and comes back out on its own side. The check runs after every step, when
+ * a particle has moved a fraction of a smoothing length. */
+#ifndef FSI_FLUID_LEAK_H
+#define FSI_FLUID_LEAK_H
+
+#include <stddef.h>
+
+#include "fluid_geometry.h"
+#include "fluid_particles.h"
+#include "periodic.h"
+
+typedef struct {
+    const fluid_geometry *geometry;     /* the walls (not owned) */
+    int n_walls;
+    int *wall;                  /* the walls' indices in geometry->boxes */
+    int periodic[FSI_DIM];
+    double tolerance;           /* how far past a wall counts [m] */
+    int n;                      /* particles the side table covers */
+    unsigned char *side;        /* n * n_walls * FSI_DIM: 0 unknown, 1 below, 2 above */
+} fluid_leak;
+
+/* What fluid_leak_check found. */
+typedef struct {
+    int particle;               /* index of the particle, -1: nothing */
+    int box;                    /* the wall's index in geometry->boxes */
+    int axis;                   /* along which it crossed */
+    int upward;                 /* 1: from below min to above max along axis */
+    double face;                /* the face it ended up beyond [m] */
+} fluid_leak_crossing;
+
+/* Sets up the check for the first n particles of p (the case's fluid and walls) at
+ * time t. Returns 0, or -1 when memory runs out. */
+int fluid_leak_init(fluid_leak *l, const fluid_geometry *g, const fsi_periodic *per,
+                    double tolerance, const fluid_particles *p, int n, double t);
+
+/* Updates the sides of every fluid particle among the first n of p at time t and
+ * returns 1 with the first crossing found, or 0. */
+int fluid_leak_check(fluid_leak *l, const fluid_particles *p, double t,
+                     fluid_leak_crossing *found);
+
+/* The particles were permuted: the particle now at index k was at sorted[k]. Returns 0,
+ * or -1 when memory runs out (nothing changed). */
+int fluid_leak_reorder(fluid_leak *l, const int *sorted);
+
+void fluid_leak_free(fluid_leak *l);
+
+#endif
