@@ -270,7 +270,7 @@ static void wait_for(fsi_participant *p, ready_fn ready, request_fn request,
         return;
     fsi_timer_start(&p->lib_timers, p->t_wait);
     fsi_request_timer timer;
-    fsi_request_timer_start(&timer, estimate, fsi_wall_seconds());
+    fsi_request_timer_start(&timer, estimate, fsi_wall_seconds(), fsi_bus_measured_loss(p->bus));
     if (!request)
         timer.next_request = INFINITY;
     while (!ready(p)) {

@@ -10,13 +10,19 @@ double fsi_wait_overdue(const fsi_wait_estimate *e)
     return fmin(fmax(rto, FSI_REQUEST_OVERDUE_MIN_S), FSI_REQUEST_OVERDUE_MAX_S);
 }
 
-void fsi_request_timer_start(fsi_request_timer *t, fsi_wait_estimate *e, double now)
+void fsi_request_timer_start(fsi_request_timer *t, fsi_wait_estimate *e, double now,
+                             double measured_loss)
 {
+    int lossy = measured_loss >= FSI_REQUEST_LATE_IS_LOST_FROM;
+    t->growth = lossy ? FSI_REQUEST_REPEAT_GROWTH_LOSSY : FSI_REQUEST_REPEAT_GROWTH;
+    t->interval_max = lossy ? FSI_REQUEST_REPEAT_MAX_LOSSY_S : FSI_REQUEST_REPEAT_MAX_S;
     t->estimate = e;
     t->started = now;
     t->overdue = fsi_wait_overdue(e);
     t->next_request = now + t->overdue;
-    t->interval = FSI_REQUEST_REPEAT_FIRST_S;
+    /* On a loss-free bus the first request finds a lost message; when it does not,
+     * the message is late, and asking again sooner than it was overdue is noise. */
+    t->interval = lossy ? FSI_REQUEST_REPEAT_FIRST_S : fmin(t->overdue, t->interval_max);
     t->requests = 0;
 }
 
@@ -26,7 +32,7 @@ int fsi_request_timer_due(fsi_request_timer *t, double now)
         return 0;
     t->requests++;
     t->next_request = now + t->interval;
-    t->interval = fmin(t->interval * FSI_REQUEST_REPEAT_GROWTH, FSI_REQUEST_REPEAT_MAX_S);
+    t->interval = fmin(t->interval * t->growth, t->interval_max);
     return 1;
 }
 

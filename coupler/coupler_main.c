@@ -255,8 +255,9 @@ static int register_participants(coupler *c)
 static int wait_for_done(coupler *c)
 {
     double now = fsi_wall_seconds();
+    double loss = fsi_bus_measured_loss(c->bus);
     for (int i = 0; i < c->n_part; i++)
-        fsi_request_timer_start(&c->part[i].done_timer, &c->part[i].done_wait, now);
+        fsi_request_timer_start(&c->part[i].done_timer, &c->part[i].done_wait, now, loss);
     double window_timeout = fsi_case_get_real(c->case_file, "run", "window_timeout", 600.0);
     double started = now;
     for (;;) {

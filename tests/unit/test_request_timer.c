@@ -1,5 +1,5 @@
 /* When a waiting process asks again for a missing message: not before the wait is
- * overdue by what such waits took, then at short intervals growing by 1.5 to a cap,
+ * overdue by what such waits took, then at short intervals growing to a cap,
  * and an estimate that waits recovered by resent copies do not inflate. */
 #include <math.h>
 
@@ -11,7 +11,7 @@
 static int requests_during(fsi_wait_estimate *e, double seconds, int original, double loss)
 {
     fsi_request_timer t;
-    fsi_request_timer_start(&t, e, 0.0);
+    fsi_request_timer_start(&t, e, 0.0, loss);
     int n = 0;
     for (double now = 0.0; now < seconds; now += 1e-5)
         n += fsi_request_timer_due(&t, now);
@@ -41,16 +41,23 @@ int main(void)
     CHECK(fsi_wait_overdue(&fast) == FSI_REQUEST_OVERDUE_MIN_S, "fast waits: overdue %g s",
           fsi_wait_overdue(&fast));
 
-    /* A lost message: first request when overdue, then 0.5 ms, 0.75 ms, ... up to
-     * the 20 ms cap: 1 s of waiting costs about 50 + 10 requests, not thousands. */
+    /* A lost message on a lossy bus: first request when overdue, then 0.5 ms,
+     * 0.75 ms, ... up to the 20 ms cap: 1 s of waiting costs about 50 + 10 requests. */
     fsi_request_timer t;
-    fsi_request_timer_start(&t, &fast, 0.0);
+    fsi_request_timer_start(&t, &fast, 0.0, 0.5);
     CHECK(!fsi_request_timer_due(&t, FSI_REQUEST_OVERDUE_MIN_S * 0.99), "asked before overdue");
     CHECK(fsi_request_timer_due(&t, FSI_REQUEST_OVERDUE_MIN_S), "not asked when overdue");
     double first = t.next_request - FSI_REQUEST_OVERDUE_MIN_S;
     CHECK(fabs(first - FSI_REQUEST_REPEAT_FIRST_S) < 1e-12, "second request after %g s", first);
     int n = requests_during(&fast, 1.0, 0, 0.5);
     CHECK(n > 40 && n < 80, "%d requests in 1 s", n);
+    /* A late one on a loss-free bus: doubling to 0.25 s, about 10 requests in 1 s. */
+    fsi_wait_estimate late = fast;
+    fsi_request_timer_start(&t, &late, 0.0, 0.0);
+    n = 0;
+    for (double now = 0.0; now < 1.0; now += 1e-5)
+        n += fsi_request_timer_due(&t, now);
+    CHECK(n >= 8 && n <= 14, "%d requests in 1 s on a loss-free bus", n);
     double before = fsi_wait_overdue(&fast);
     CHECK(before == FSI_REQUEST_OVERDUE_MIN_S, "a resent copy changed the estimate: %g", before);
 
