@@ -21,6 +21,7 @@ trap 'rm -rf "$work"' EXIT
 
 median() { sort -g | awk '{a[NR] = $1} END {print (NR % 2) ? a[(NR + 1) / 2] : (a[NR / 2] + a[NR / 2 + 1]) / 2}'; }
 identical() {
+  local f
   for f in solid.h5 fluid.h5; do
     [ -e "$1/$f" ] || continue
     h5diff -q "$1/$f" "$2/$f" >/dev/null 2>&1 || return 1

@@ -283,7 +283,7 @@ static void wait_for(fsi_participant *p, ready_fn ready, request_fn request,
             break;
         check_run_alive(p);
         double now = fsi_wall_seconds();
-        if (fsi_request_timer_due(&timer, now))
+        if (fsi_request_timer_due(&timer, now, fsi_bus_measured_loss(p->bus)))
             request(p);
         /* Wakes at least every heartbeat interval to judge the coupler's silence. */
         double until = fmin(timer.next_request, now + p->env.heartbeat_interval);

@@ -10,24 +10,36 @@ double fsi_wait_overdue(const fsi_wait_estimate *e)
     return fmin(fmax(rto, FSI_REQUEST_OVERDUE_MIN_S), FSI_REQUEST_OVERDUE_MAX_S);
 }
 
+/* The repeat schedule for the loss the bus measures now. */
+static void set_schedule(fsi_request_timer *t, double measured_loss)
+{
+    t->lossy = measured_loss >= FSI_REQUEST_LATE_IS_LOST_FROM;
+    t->growth = t->lossy ? FSI_REQUEST_REPEAT_GROWTH_LOSSY : FSI_REQUEST_REPEAT_GROWTH;
+    t->interval_max = t->lossy ? FSI_REQUEST_REPEAT_MAX_LOSSY_S : FSI_REQUEST_REPEAT_MAX_S;
+    /* On a loss-free bus the first request finds a lost message; when it does not,
+     * the message is late, and asking again sooner than it was overdue is noise. */
+    double first = t->lossy ? FSI_REQUEST_REPEAT_FIRST_S : fmin(t->overdue, t->interval_max);
+    t->interval = t->requests == 0 ? first : fmin(t->interval, t->interval_max);
+}
+
 void fsi_request_timer_start(fsi_request_timer *t, fsi_wait_estimate *e, double now,
                              double measured_loss)
 {
-    int lossy = measured_loss >= FSI_REQUEST_LATE_IS_LOST_FROM;
-    t->growth = lossy ? FSI_REQUEST_REPEAT_GROWTH_LOSSY : FSI_REQUEST_REPEAT_GROWTH;
-    t->interval_max = lossy ? FSI_REQUEST_REPEAT_MAX_LOSSY_S : FSI_REQUEST_REPEAT_MAX_S;
     t->estimate = e;
     t->started = now;
     t->overdue = fsi_wait_overdue(e);
     t->next_request = now + t->overdue;
-    /* On a loss-free bus the first request finds a lost message; when it does not,
-     * the message is late, and asking again sooner than it was overdue is noise. */
-    t->interval = lossy ? FSI_REQUEST_REPEAT_FIRST_S : fmin(t->overdue, t->interval_max);
     t->requests = 0;
+    set_schedule(t, measured_loss);
 }
 
-int fsi_request_timer_due(fsi_request_timer *t, double now)
+int fsi_request_timer_due(fsi_request_timer *t, double now, double measured_loss)
 {
+    /* Loss found during a long wait (the first one: registration) shortens it. */
+    if (!t->lossy && measured_loss >= FSI_REQUEST_LATE_IS_LOST_FROM) {
+        set_schedule(t, measured_loss);
+        t->next_request = fmin(t->next_request, now + t->interval);
+    }
     if (now < t->next_request)
         return 0;
     t->requests++;

@@ -45,6 +45,7 @@ typedef struct {
     fsi_wait_estimate *estimate;
     double started, overdue, next_request, interval;
     double growth, interval_max;
+    int lossy;         /* repeating on the schedule for a bus that loses messages */
     int requests;
 } fsi_request_timer;
 
@@ -55,8 +56,9 @@ double fsi_wait_overdue(const fsi_wait_estimate *e);
  * (fsi_bus_measured_loss). */
 void fsi_request_timer_start(fsi_request_timer *t, fsi_wait_estimate *e, double now,
                              double measured_loss);
-/* 1 when a request is due at 'now' (and schedules the next one), else 0. */
-int fsi_request_timer_due(fsi_request_timer *t, double now);
+/* 1 when a request is due at 'now' (and schedules the next one), else 0. A wait
+ * that started on a loss-free bus turns to the lossy schedule once loss is measured. */
+int fsi_request_timer_due(fsi_request_timer *t, double now, double measured_loss);
 /* The message arrived at 'now'; 'original' is 0 when it was a resent copy;
  * 'measured_loss' is the bus's (fsi_bus_measured_loss). */
 void fsi_request_timer_arrived(fsi_request_timer *t, double now, int original,

@@ -275,12 +275,13 @@ static int wait_for_done(coupler *c)
                 }
             return -1;
         }
+        loss = fsi_bus_measured_loss(c->bus);
         for (int i = 0; i < c->n_part; i++) {
             participant_info *p = &c->part[i];
             if (p->done_window >= c->window)
                 continue;
             missing++;
-            if (fsi_request_timer_due(&p->done_timer, now))
+            if (fsi_request_timer_due(&p->done_timer, now, loss))
                 fsi_bus_request_resend(c->bus, p->name, FSI_MSG_DONE, c->window, 0);
             next_event = fmin(next_event, p->done_timer.next_request);
         }

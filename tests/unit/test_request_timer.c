@@ -14,7 +14,7 @@ static int requests_during(fsi_wait_estimate *e, double seconds, int original, d
     fsi_request_timer_start(&t, e, 0.0, loss);
     int n = 0;
     for (double now = 0.0; now < seconds; now += 1e-5)
-        n += fsi_request_timer_due(&t, now);
+        n += fsi_request_timer_due(&t, now, loss);
     fsi_request_timer_arrived(&t, seconds, original, loss);
     return n;
 }
@@ -45,8 +45,8 @@ int main(void)
      * 0.75 ms, ... up to the 20 ms cap: 1 s of waiting costs about 50 + 10 requests. */
     fsi_request_timer t;
     fsi_request_timer_start(&t, &fast, 0.0, 0.5);
-    CHECK(!fsi_request_timer_due(&t, FSI_REQUEST_OVERDUE_MIN_S * 0.99), "asked before overdue");
-    CHECK(fsi_request_timer_due(&t, FSI_REQUEST_OVERDUE_MIN_S), "not asked when overdue");
+    CHECK(!fsi_request_timer_due(&t, FSI_REQUEST_OVERDUE_MIN_S * 0.99, 0.5), "asked before overdue");
+    CHECK(fsi_request_timer_due(&t, FSI_REQUEST_OVERDUE_MIN_S, 0.5), "not asked when overdue");
     double first = t.next_request - FSI_REQUEST_OVERDUE_MIN_S;
     CHECK(fabs(first - FSI_REQUEST_REPEAT_FIRST_S) < 1e-12, "second request after %g s", first);
     int n = requests_during(&fast, 1.0, 0, 0.5);
@@ -56,8 +56,14 @@ int main(void)
     fsi_request_timer_start(&t, &late, 0.0, 0.0);
     n = 0;
     for (double now = 0.0; now < 1.0; now += 1e-5)
-        n += fsi_request_timer_due(&t, now);
+        n += fsi_request_timer_due(&t, now, 0.0);
     CHECK(n >= 8 && n <= 14, "%d requests in 1 s on a loss-free bus", n);
+    /* Loss measured during such a wait: it repeats at the short lossy intervals. */
+    fsi_request_timer_start(&t, &late, 0.0, 0.0);
+    n = 0;
+    for (double now = 0.0; now < 1.0; now += 1e-5)
+        n += fsi_request_timer_due(&t, now, now < 0.1 ? 0.0 : 0.5);
+    CHECK(n > 40, "only %d requests in 1 s with loss found after 0.1 s", n);
     double before = fsi_wait_overdue(&fast);
     CHECK(before == FSI_REQUEST_OVERDUE_MIN_S, "a resent copy changed the estimate: %g", before);
 
