@@ -18,6 +18,7 @@ if [ $# -gt 0 ] && [[ "$1" =~ ^[0-9]+$ ]]; then repeats="$1"; shift; fi
 fractions=(0 0.2 0.5 0.8)
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
+failed="$(mktemp -d /tmp/loss_table_failed.XXXXXX)"   # failed runs are kept here
 
 median() { sort -g | awk '{a[NR] = $1} END {print (NR % 2) ? a[(NR + 1) / 2] : (a[NR / 2] + a[NR / 2 + 1]) / 2}'; }
 identical() {
@@ -49,12 +50,18 @@ for r in $(seq "$repeats"); do
       >"$out.txt" 2>&1 || status=$?
     t1=$(date +%s.%N)
     awk -v a="$t0" -v b="$t1" 'BEGIN {printf "%.2f\n", b - a}' >>"$work/wall_$f"
-    if [ "$status" -eq 0 ] && identical "$work/f0_1" "$out"; then echo yes; else echo "no (status $status)"; fi >>"$work/same_$f"
+    if [ "$status" -eq 0 ] && identical "$work/f0_1" "$out"; then
+      echo yes
+    else
+      echo "no (status $status)"
+      cp -r "$out" "$out.txt" "$failed/"
+    fi >>"$work/same_$f"
     per_window "$out/run.log" "resend requests" bus_resend_requests >>"$work/req_$f"
     per_window "$out/run.log" "extra copies" bus_extra_copies >>"$work/copies_$f"
   done
 done
 loss_free=$(median <"$work/wall_0")
+rmdir "$failed" 2>/dev/null || echo "# failed runs kept in $failed"
 printf "| loss | wall time median [s] | ratio to 0 %% | bit-identical | resend requests per window | extra copies per window | runs [s] |\n|---|---|---|---|---|---|---|\n"
 for f in "${fractions[@]}"; do
   wall=$(median <"$work/wall_$f")

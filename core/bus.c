@@ -34,6 +34,10 @@
 #define COPIES_MAX 5
 #define COPY_MAX_BYTES 65536
 #define SENDERS_MAX 8
+/* Messages LCM queues for this process while it computes; beyond them it drops new
+ * ones. Its default of 30 is a few windows of heartbeats and copies under heavy
+ * loss. Large messages are never copied and resent at most once per gap. */
+#define QUEUE_CAPACITY 1000
 
 typedef struct {
     char name[64];
@@ -419,7 +423,8 @@ fsi_bus *fsi_bus_open(const char *url, const char *self, int64_t run_id,
         free(b);
         return NULL;
     }
-    if (!lcm_subscribe(b->lcm, ".*", on_lcm_message, b)) {
+    lcm_subscription_t *all = lcm_subscribe(b->lcm, ".*", on_lcm_message, b);
+    if (!all || lcm_subscription_set_queue_capacity(all, QUEUE_CAPACITY) != 0) {
         fsi_error("bus: cannot subscribe on '%s'", url);
         fsi_bus_close(b);
         return NULL;
