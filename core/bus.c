@@ -31,7 +31,7 @@
  * estimate by LOSS_GAIN, below the threshold. */
 #define LOSS_FOR_COPIES 0.02
 #define COPIES_TARGET_LOSS 0.05
-#define COPIES_MAX 5
+#define COPIES_MAX 12
 #define COPY_MAX_BYTES 65536
 #define SENDERS_MAX 8
 /* Messages LCM queues for this process while it computes; beyond them it drops new
