@@ -8,12 +8,11 @@ source "$(dirname "$0")/lib.sh"
 "$FSI_RUN" "$FSI_SOURCE_DIR/cases/c1_elastic_plate.ini" --out run --set run.end_time=0.003 \
   >run.txt 2>&1 || { cat run.txt; fail "C1 run failed"; }
 windows=$(awk '$1 == "windows" {print $3}' run/run.log)
-coupler=$(sed -n 's/^bus coupler: .*resend requests \([0-9]*\),.*/\1/p' run/run.log)
+requests=$(sed -n 's/^bus coupler: .*resend requests \([0-9]*\),.*/\1/p' run/run.log)
 copies=$(sed -n 's/^bus coupler: .*extra copies \([0-9]*\),.*/\1/p' run/run.log)
-requests=$coupler
 for p in fluid solid; do
   requests=$((requests + $(log_stat run/run.log "$p" bus_resend_requests)))
-  copies=$((copies + $(log_stat run/run.log "$p" bus_extra_copies)))
+  copies=$((${copies:-0} + $(log_stat run/run.log "$p" bus_extra_copies || true) + 0))
 done
 echo "$windows windows: $requests resend requests, $copies extra copies"
 # One request per window at most: a wide margin for a loaded machine, where a
