@@ -1,6 +1,7 @@
 #include "bus.h"
 
 #include <lcm/lcm.h>
+#include <math.h>
 #include <pthread.h>
 #include <stdatomic.h>
 #include <unistd.h>
@@ -17,8 +18,31 @@
  * lockstep protocol, where only the current window's messages are ever asked for. */
 #define KEPT_MAX 16
 /* A copy is published again at most this often: requests that queued up while this
- * process was computing must not each send a large message. */
-#define RESEND_MIN_GAP_S 0.001
+ * process was computing must not each send a large message. Shorter than the
+ * shortest interval between a requester's requests (core/request_timer.h). */
+#define RESEND_MIN_GAP_S 0.0002
+
+/* Measured loss: the fraction of other processes' sequence numbers never received,
+ * smoothed over about this many recent ones. */
+#define LOSS_GAIN (1.0 / 64)
+/* With a measured loss p from LOSS_FOR_COPIES on, messages up to COPY_MAX_BYTES are
+ * sent in n copies, the fewest with p^n <= COPIES_TARGET_LOSS, at most COPIES_MAX.
+ * A loss-free run measures 0 and sends one copy; a single lost message moves the
+ * estimate by LOSS_GAIN, below the threshold. */
+#define LOSS_FOR_COPIES 0.02
+#define COPIES_TARGET_LOSS 0.05
+#define COPIES_MAX 12
+#define COPY_MAX_BYTES 65536
+#define SENDERS_MAX 8
+/* Messages LCM queues for this process while it computes; beyond them it drops new
+ * ones. Its default of 30 is a few windows of heartbeats and copies under heavy
+ * loss. Large messages are never copied and resent at most once per gap. */
+#define QUEUE_CAPACITY 1000
+
+typedef struct {
+    char name[64];
+    int64_t seq;      /* highest sequence number received */
+} sender_seen;
 
 typedef struct {
     int used;
@@ -44,6 +68,10 @@ struct fsi_bus {
     fsi_bus_counters counters;
     double drop_fraction;
     uint64_t drop_state;
+    sender_seen senders[SENDERS_MAX];
+    int n_senders;
+    double measured_loss;
+    int delivering_new;        /* set while the handler runs, see fsi_bus_message_is_new */
 
     pthread_t heartbeat_thread;
     int heartbeat_running;
@@ -108,6 +136,16 @@ static int test_drops_this_one(fsi_bus *b)
     return u < b->drop_fraction;
 }
 
+/* How many copies of a message of 'len' bytes to send at the measured loss. */
+static int copies_for(const fsi_bus *b, int len)
+{
+    double p = b->measured_loss;
+    if (p < LOSS_FOR_COPIES || len > COPY_MAX_BYTES)
+        return 1;
+    int n = (int)ceil(log(COPIES_TARGET_LOSS) / log(p));
+    return n < 1 ? 1 : n > COPIES_MAX ? COPIES_MAX : n;
+}
+
 /* Sends bytes unless the test switch withholds them; caller holds the lock. */
 static int send_locked(fsi_bus *b, fsi_msg_type type, const void *bytes, int len)
 {
@@ -145,6 +183,24 @@ static void keep_copy_locked(fsi_bus *b, fsi_msg_type type, int window, int iter
     *k = (kept_message){1, type, window, iteration, bytes, len, fsi_wall_seconds()};
 }
 
+/* Under measured loss: the further copies of a message just sent, each with its own
+ * sequence number, so that receivers measure the loss of every copy (a resent copy
+ * keeps its original's). Caller holds the lock; 'msg' has the header filled in. */
+static void send_extra_copies_locked(fsi_bus *b, fsi_msg_type type, void *msg, int len)
+{
+    int n = copies_for(b, len);
+    if (n < 2)
+        return;
+    void *copy = malloc((size_t)len);
+    fsi_header_t *h = msg;
+    for (int i = 1; copy && i < n; i++) {
+        h->seq = ++b->seq;
+        if (fsi_message_encode(type, msg, copy, len) == len && send_locked(b, type, copy, len) == 0)
+            b->counters.extra_copies++;
+    }
+    free(copy);
+}
+
 int fsi_bus_publish(fsi_bus *b, fsi_msg_type type, void *msg)
 {
     fsi_header_t *h = msg;
@@ -165,6 +221,7 @@ int fsi_bus_publish(fsi_bus *b, fsi_msg_type type, void *msg)
     int rc = -1;
     if (bytes && fsi_message_encode(type, msg, bytes, len) == len) {
         rc = send_locked(b, type, bytes, len);
+        send_extra_copies_locked(b, type, msg, len);
         if (keeps_copy(type)) {
             keep_copy_locked(b, type, h->window, h->iteration, bytes, len);
             bytes = NULL;
@@ -204,8 +261,9 @@ static void answer_resend(fsi_bus *b, const fsi_resend_t *r)
     double now = fsi_wall_seconds();
     if (k && now - k->last_sent >= RESEND_MIN_GAP_S) {
         k->last_sent = now;
-        if (send_locked(b, k->type, k->bytes, k->len) == 0)
-            b->counters.resent++;
+        for (int i = copies_for(b, k->len); i > 0; i--)
+            if (send_locked(b, k->type, k->bytes, k->len) == 0)
+                b->counters.resent++;
     }
     pthread_mutex_unlock(&b->lock);
 }
@@ -215,6 +273,39 @@ static void count(fsi_bus *b, long *counter)
     pthread_mutex_lock(&b->lock);
     (*counter)++;
     pthread_mutex_unlock(&b->lock);
+}
+
+/* Updates the measured loss from the sender's sequence numbers: the numbers skipped
+ * since the highest one received were lost (on a sender's first message nothing is
+ * known). Returns 1 when 'seq' is newer than any received from this sender, 0 for a
+ * resent copy or a late one. */
+static int note_sequence(fsi_bus *b, const char *sender, int64_t seq)
+{
+    pthread_mutex_lock(&b->lock);
+    sender_seen *s = NULL;
+    for (int i = 0; i < b->n_senders && !s; i++)
+        if (strcmp(b->senders[i].name, sender) == 0)
+            s = &b->senders[i];
+    int is_new = 1;
+    if (!s) {
+        if (b->n_senders < SENDERS_MAX) {
+            s = &b->senders[b->n_senders++];
+            snprintf(s->name, sizeof s->name, "%s", sender);
+            s->seq = seq;
+        }
+    } else if (seq <= s->seq) {
+        is_new = 0;
+    } else {
+        /* Each skipped number counts as one lost message, each received one as one
+         * arrived; a burst beyond 1000 adds no more information. */
+        int64_t skipped = seq - s->seq - 1;
+        for (int64_t i = 0; i < skipped && i < 1000; i++)
+            b->measured_loss += LOSS_GAIN * (1.0 - b->measured_loss);
+        b->measured_loss -= LOSS_GAIN * b->measured_loss;
+        s->seq = seq;
+    }
+    pthread_mutex_unlock(&b->lock);
+    return is_new;
 }
 
 /* Every message passes here, from the network or from a recording; only valid
@@ -238,10 +329,14 @@ static void accept_message(fsi_bus *b, int type, const void *data, int len)
         count(b, &b->counters.ignored_foreign_run);
     } else if (strcmp(h->sender, b->self) != 0) {
         count(b, &b->counters.received);
-        if (type == FSI_MSG_RESEND)
+        int is_new = note_sequence(b, h->sender, h->seq);
+        if (type == FSI_MSG_RESEND) {
             answer_resend(b, &msg.resend);
-        else if (b->handler)
+        } else if (b->handler) {
+            b->delivering_new = is_new;
             b->handler((fsi_msg_type)type, &msg, b->user);
+            b->delivering_new = 0;
+        }
     }
     fsi_message_cleanup((fsi_msg_type)type, &msg);
 }
@@ -328,7 +423,8 @@ fsi_bus *fsi_bus_open(const char *url, const char *self, int64_t run_id,
         free(b);
         return NULL;
     }
-    if (!lcm_subscribe(b->lcm, ".*", on_lcm_message, b)) {
+    lcm_subscription_t *all = lcm_subscribe(b->lcm, ".*", on_lcm_message, b);
+    if (!all || lcm_subscription_set_queue_capacity(all, QUEUE_CAPACITY) != 0) {
         fsi_error("bus: cannot subscribe on '%s'", url);
         fsi_bus_close(b);
         return NULL;
@@ -405,6 +501,19 @@ fsi_bus_counters fsi_bus_get_counters(fsi_bus *b)
     fsi_bus_counters c = b->counters;
     pthread_mutex_unlock(&b->lock);
     return c;
+}
+
+int fsi_bus_message_is_new(const fsi_bus *b)
+{
+    return b->delivering_new;
+}
+
+double fsi_bus_measured_loss(fsi_bus *b)
+{
+    pthread_mutex_lock(&b->lock);
+    double p = b->measured_loss;
+    pthread_mutex_unlock(&b->lock);
+    return p;
 }
 
 double fsi_bus_test_drop_fraction(const fsi_bus *b)

@@ -7,6 +7,8 @@
  * - Received messages are checked before anyone sees them: another run's, another
  *   protocol version's, undecodable ones (wrong type or size) and unknown channels are
  *   ignored and counted, never passed on; our own echoes are dropped.
+ * - Loss is measured from the gaps in every sender's sequence numbers; while it is
+ *   high, small messages are sent in several copies.
  * - Test switch: FSI_TEST_DROP_FRACTION=f in the environment drops a fraction f of the
  *   messages this process publishes, at random from FSI_TEST_DROP_SEED (default 1).
  *   Only for tests that prove recovery; the run log records it.
@@ -33,6 +35,7 @@ typedef struct {
     long received;               /* valid messages of this run from others */
     long resent;                 /* kept copies published again on request */
     long resend_requests;        /* resend_t this process sent */
+    long extra_copies;           /* further copies sent because loss was measured */
     long ignored_foreign_run;
     long ignored_bad_version;
     long ignored_undecodable;
@@ -72,6 +75,12 @@ int fsi_bus_start_heartbeat(fsi_bus *b, double interval_s);
 void fsi_bus_set_heartbeat(fsi_bus *b, int window, int state);
 
 fsi_bus_counters fsi_bus_get_counters(fsi_bus *b);
+/* Inside the handler: 1 when the message's sequence number is newer than any received
+ * from its sender (an original, as far as this process can tell), 0 for a resent copy
+ * or a late one. */
+int fsi_bus_message_is_new(const fsi_bus *b);
+/* Smoothed fraction of other processes' messages this process never received. */
+double fsi_bus_measured_loss(fsi_bus *b);
 /* Fraction of messages withheld by the test switch (0 when off). */
 double fsi_bus_test_drop_fraction(const fsi_bus *b);
 const char *fsi_bus_self(const fsi_bus *b);

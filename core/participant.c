@@ -20,12 +20,10 @@
 #include "fsi_welcome_t.h"
 #include "log.h"
 #include "participant_env.h"
+#include "request_timer.h"
 
 #define MAX_PROBES 64
 #define MAX_PEERS 8
-/* Re-requests of a missing message back off from the first to the last interval. */
-#define REQUEST_FIRST_S 0.003
-#define REQUEST_LAST_S 0.5
 
 /* The other side's interface data, tagged with the window it belongs to. */
 typedef struct {
@@ -75,6 +73,11 @@ struct fsi_participant {
 
     fsi_timers lib_timers;    /* time spent waiting on the other processes */
     int t_wait;
+
+    /* How long each kind of wait took (when to ask again), and whether the message
+     * that ended the last one was an original (core/request_timer.h). */
+    fsi_wait_estimate welcome_wait, step_wait, interface_wait;
+    int taken_new;
 };
 
 static const char *other_role(const fsi_participant *p)
@@ -139,6 +142,7 @@ static void take_solid_state(fsi_participant *p, const fsi_solid_state_t *m)
     grow_slot(s, m->n);
     s->window = m->header.window;
     s->n = m->n;
+    p->taken_new = fsi_bus_message_is_new(p->bus);
     memcpy(s->id, m->id, (size_t)m->n * sizeof(int32_t));
     memcpy(s->position, m->position, (size_t)m->n_components * sizeof(double));
     memcpy(s->velocity, m->velocity, (size_t)m->n_components * sizeof(double));
@@ -159,6 +163,7 @@ static void take_fluid_load(fsi_participant *p, const fsi_fluid_load_t *m)
     grow_slot(s, m->n);
     s->window = m->header.window;
     s->n = m->n;
+    p->taken_new = fsi_bus_message_is_new(p->bus);
     memcpy(s->id, m->id, (size_t)m->n * sizeof(int32_t));
     memcpy(s->pressure, m->pressure, (size_t)m->n * sizeof(double));
     memcpy(s->force, m->force, (size_t)m->n_components * sizeof(double));
@@ -176,6 +181,7 @@ static void take_welcome(fsi_participant *p, const fsi_welcome_t *m)
         p->n_peers++;
     }
     p->welcomed = 1;
+    p->taken_new = fsi_bus_message_is_new(p->bus);
 }
 
 static void take_step(fsi_participant *p, const fsi_step_t *m)
@@ -188,6 +194,7 @@ static void take_step(fsi_participant *p, const fsi_step_t *m)
     p->next_dt = m->dt;
     p->next_flags = m->flags;
     p->next_frame = m->frame;
+    p->taken_new = fsi_bus_message_is_new(p->bus);
 }
 
 static void on_message(fsi_msg_type type, const void *msg, void *user)
@@ -254,12 +261,18 @@ static void check_run_alive(fsi_participant *p)
 typedef int (*ready_fn)(const fsi_participant *p);
 typedef void (*request_fn)(fsi_participant *p);
 
-/* Handles messages until ready(p); asks again for what is missing with backoff. */
-static void wait_for(fsi_participant *p, ready_fn ready, request_fn request)
+/* Handles messages until ready(p); asks again for what is missing once it is overdue
+ * by the estimate of this kind of wait (NULL: never asks). */
+static void wait_for(fsi_participant *p, ready_fn ready, request_fn request,
+                     fsi_wait_estimate *estimate)
 {
+    if (ready(p))
+        return;
     fsi_timer_start(&p->lib_timers, p->t_wait);
-    double interval = REQUEST_FIRST_S;
-    double next_request = fsi_wall_seconds() + interval;
+    fsi_request_timer timer;
+    fsi_request_timer_start(&timer, estimate, fsi_wall_seconds(), fsi_bus_measured_loss(p->bus));
+    if (!request)
+        timer.next_request = INFINITY;
     while (!ready(p)) {
         /* Handle what arrived while this process computed before judging the
          * coupler's silence: after a window longer than the watchdog timeout its
@@ -270,15 +283,15 @@ static void wait_for(fsi_participant *p, ready_fn ready, request_fn request)
             break;
         check_run_alive(p);
         double now = fsi_wall_seconds();
-        if (now >= next_request) {
-            if (request)
-                request(p);
-            interval = interval * 2 > REQUEST_LAST_S ? REQUEST_LAST_S : interval * 2;
-            next_request = now + interval;
-        }
-        if (fsi_bus_poll(p->bus, next_request - now) < 0)
+        if (fsi_request_timer_due(&timer, now, fsi_bus_measured_loss(p->bus)))
+            request(p);
+        /* Wakes at least every heartbeat interval to judge the coupler's silence. */
+        double until = fmin(timer.next_request, now + p->env.heartbeat_interval);
+        if (fsi_bus_poll(p->bus, until - now) < 0)
             die_with_run("the bus failed while waiting", FSI_EXIT_RUN_FAILURE);
     }
+    fsi_request_timer_arrived(&timer, fsi_wall_seconds(), p->taken_new,
+                              fsi_bus_measured_loss(p->bus));
     fsi_timer_stop(&p->lib_timers, p->t_wait);
 }
 
@@ -383,9 +396,9 @@ int fsi_ongoing(fsi_participant *p)
     if (!p->registered) {
         p->registered = 1;
         send_register(p);
-        wait_for(p, is_welcomed, send_register);
+        wait_for(p, is_welcomed, send_register, &p->welcome_wait);
     }
-    wait_for(p, has_next_step, request_step);
+    wait_for(p, has_next_step, request_step, &p->step_wait);
     p->window = p->next_window;
     p->t = p->next_t;
     p->dt = p->next_dt;
@@ -473,7 +486,7 @@ int fsi_read_interface(fsi_participant *p, fsi_interface *d)
     memset(d, 0, sizeof *d);
     if (!fsi_coupled(p))
         return 0;
-    wait_for(p, has_interface_data, request_interface);
+    wait_for(p, has_interface_data, request_interface, &p->interface_wait);
     const interface_slot *s = &p->other;
     d->n = s->n;
     d->id = s->id;
@@ -596,6 +609,7 @@ static int collect_stats(fsi_participant *p, const fsi_timers *timers, char **na
         {"bus_received", c.received},
         {"bus_resent", c.resent},
         {"bus_resend_requests", c.resend_requests},
+        {"bus_extra_copies", c.extra_copies},
         {"bus_dropped_by_test", c.dropped_by_test},
         {"bus_ignored_foreign_run", c.ignored_foreign_run},
         {"bus_ignored_bad_version", c.ignored_bad_version},
@@ -620,7 +634,7 @@ int fsi_close(fsi_participant *p, const fsi_timers *timers)
         fsi_bus_set_heartbeat(p->bus, p->window, FSI_STATE_FINISHED);
         /* Stay until the coupler confirms it has every final report (it re-requests a
          * lost one from us while we wait here). */
-        wait_for(p, coupler_has_finished, NULL);
+        wait_for(p, coupler_has_finished, NULL, NULL);
     } else {
         status = FSI_EXIT_RUN_FAILURE;
     }

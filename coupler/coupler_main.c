@@ -25,12 +25,11 @@
 #include "participant_env.h"
 #include "probes_csv.h"
 #include "progress.h"
+#include "request_timer.h"
 #include "timers.h"
 #include "window_schedule.h"
 
 #define MAX_PARTICIPANTS 2
-#define REQUEST_FIRST_S 0.003
-#define REQUEST_LAST_S 0.5
 #define POLL_SLICE_S 0.05
 
 static const char *const roles[MAX_PARTICIPANTS] = {"fluid", "solid"};
@@ -51,7 +50,9 @@ typedef struct {
     int n_stats;
     char **stat_names;
     double *stat_values;
-    double request_interval, next_request;
+    /* When to ask again for this window's done_t (core/request_timer.h). */
+    fsi_wait_estimate done_wait;
+    fsi_request_timer done_timer;
 } participant_info;
 
 typedef struct {
@@ -172,6 +173,8 @@ static void take_done(coupler *c, participant_info *p, const fsi_done_t *d)
         return;
     }
     p->done_window = d->header.window;
+    fsi_request_timer_arrived(&p->done_timer, fsi_wall_seconds(), fsi_bus_message_is_new(c->bus),
+                              fsi_bus_measured_loss(c->bus));
     p->dt_proposed = d->dt_next_max;
     if (d->n_probes > 0)   /* an empty array may arrive as NULL */
         memcpy(p->probe_values, d->probe_values, (size_t)d->n_probes * sizeof(double));
@@ -249,14 +252,13 @@ static int register_participants(coupler *c)
 }
 
 /* Waits for every participant's done_t of the current window, asking again for
- * missing ones with backoff; returns -1 when the run failed meanwhile. */
+ * missing ones once they are overdue; returns -1 when the run failed meanwhile. */
 static int wait_for_done(coupler *c)
 {
     double now = fsi_wall_seconds();
-    for (int i = 0; i < c->n_part; i++) {
-        c->part[i].request_interval = REQUEST_FIRST_S;
-        c->part[i].next_request = now + REQUEST_FIRST_S;
-    }
+    double loss = fsi_bus_measured_loss(c->bus);
+    for (int i = 0; i < c->n_part; i++)
+        fsi_request_timer_start(&c->part[i].done_timer, &c->part[i].done_wait, now, loss);
     double window_timeout = fsi_case_get_real(c->case_file, "run", "window_timeout", 600.0);
     double started = now;
     for (;;) {
@@ -274,17 +276,15 @@ static int wait_for_done(coupler *c)
                 }
             return -1;
         }
+        loss = fsi_bus_measured_loss(c->bus);
         for (int i = 0; i < c->n_part; i++) {
             participant_info *p = &c->part[i];
             if (p->done_window >= c->window)
                 continue;
             missing++;
-            if (now >= p->next_request) {
+            if (fsi_request_timer_due(&p->done_timer, now, loss))
                 fsi_bus_request_resend(c->bus, p->name, FSI_MSG_DONE, c->window, 0);
-                p->request_interval = fmin(2 * p->request_interval, REQUEST_LAST_S);
-                p->next_request = now + p->request_interval;
-            }
-            next_event = fmin(next_event, p->next_request);
+            next_event = fmin(next_event, p->done_timer.next_request);
         }
         if (!missing)
             return 0;
@@ -454,9 +454,10 @@ static void write_bus_counters(FILE *log, const char *who, fsi_bus_counters b)
 {
     fprintf(log,
             "bus %s: published %ld, received %ld, resent %ld, resend requests %ld, "
-            "withheld by test switch %ld, ignored: foreign run %ld, bad version %ld, "
-            "undecodable %ld, unknown channel %ld\n",
-            who, b.published, b.received, b.resent, b.resend_requests, b.dropped_by_test,
+            "extra copies %ld, withheld by test switch %ld, ignored: foreign run %ld, "
+            "bad version %ld, undecodable %ld, unknown channel %ld\n",
+            who, b.published, b.received, b.resent, b.resend_requests, b.extra_copies,
+            b.dropped_by_test,
             b.ignored_foreign_run, b.ignored_bad_version, b.ignored_undecodable,
             b.ignored_unknown_channel);
 }
