@@ -4,6 +4,9 @@
 #define FSI_LOG_H
 
 #include <stdarg.h>
+#include <stddef.h>
+
+#include "dim.h"
 
 /* Name printed in front of every message ("coupler", "solid", ...). */
 void fsi_log_set_name(const char *name);
@@ -12,6 +15,10 @@ const char *fsi_log_name(void);
 void fsi_info(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
 void fsi_warn(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
 void fsi_error(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
+
+/* "x, y[, z]" of an FSI_DIM vector at full precision (%.9g) into buf; returns buf. */
+#define FSI_VECTOR_TEXT_SIZE (FSI_DIM * 24 + 4)
+const char *fsi_vector_text(char *buf, size_t size, const double *v);
 
 /* Exit codes shared by every program of the project. */
 enum {
