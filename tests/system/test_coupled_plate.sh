@@ -25,8 +25,8 @@
 #     they carry no weight but the viscous shear (mu u / dx ~ 1e-7 of it); the
 #     discrete scheme adds what the fluid particles at the two bottom corners push
 #     on the wall particles below the plate's face (the walls reach 50 mm below it,
-#     within the fluid's 45 mm support of the corner) and its own momentum error:
-#     -0.73 % here (docs/testing.md). 2 % leaves room for that and fails a load that
+#     within the fluid's 45 mm support of the corner) and the momentum its artificial
+#     viscosity does not conserve: -0.73 % here (docs/testing.md). 2 % leaves room for that and fails a load that
 #     is 5 % off;
 #   - the window is the fluid's step: the fluid takes 1 to 2 steps per coupling
 #     window (2 when its stable step shrank a little since it proposed the window);
