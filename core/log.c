@@ -69,3 +69,16 @@ int fsi_fclose_checked(FILE *f)
     }
     return bad ? (err ? err : EIO) : 0;
 }
+
+const char *fsi_vector_text(char *buf, size_t size, const double *v)
+{
+    size_t len = 0;
+    buf[0] = '\0';
+    for (int d = 0; d < FSI_DIM && len < size; d++) {
+        int n = snprintf(buf + len, size - len, "%s%.9g", d ? ", " : "", v[d]);
+        if (n < 0)
+            break;
+        len += (size_t)n;
+    }
+    return buf;
+}

@@ -5,6 +5,9 @@
 
 #include <stdarg.h>
 #include <stdio.h>
+#include <stddef.h>
+
+#include "dim.h"
 
 /* Name printed in front of every message ("coupler", "solid", ...). */
 void fsi_log_set_name(const char *name);
@@ -22,6 +25,10 @@ int fsi_log_write_error(void);
  * failed write (EIO when the system gave none): a full disk shows up here at the
  * latest. The file is closed either way. */
 int fsi_fclose_checked(FILE *f);
+
+/* "x, y[, z]" of an FSI_DIM vector at full precision (%.9g) into buf; returns buf. */
+#define FSI_VECTOR_TEXT_SIZE (FSI_DIM * 24 + 4)
+const char *fsi_vector_text(char *buf, size_t size, const double *v);
 
 /* Exit codes shared by every program of the project. */
 enum {

@@ -315,10 +315,10 @@ static void publish_step(coupler *c, double dt, int flags, int frame)
 
 static double smallest_proposal(const coupler *c)
 {
-    double dt = DBL_MAX;
+    double proposals[MAX_PARTICIPANTS];
     for (int i = 0; i < c->n_part; i++)
-        dt = fmin(dt, c->part[i].dt_proposed);
-    return dt;
+        proposals[i] = c->part[i].dt_proposed;
+    return fsi_window_smallest_proposal(proposals, c->n_part);
 }
 
 static int open_probes(coupler *c)

@@ -1,5 +1,6 @@
 #include "window_schedule.h"
 
+#include <float.h>
 #include <math.h>
 
 /* Event times closer than this fraction of a window count as hit: floating-point
@@ -15,6 +16,14 @@ void fsi_window_schedule_init(fsi_window_schedule *s, double t_end, double outpu
     s->max_window = max_window;
     s->next_frame = 1;
     s->next_probe = 1;
+}
+
+double fsi_window_smallest_proposal(const double *proposals, int n)
+{
+    double dt = DBL_MAX;
+    for (int i = 0; i < n; i++)
+        dt = fmin(dt, proposals[i]);
+    return dt;
 }
 
 static double frame_time(const fsi_window_schedule *s)

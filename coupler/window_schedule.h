@@ -24,6 +24,10 @@ typedef struct {
 void fsi_window_schedule_init(fsi_window_schedule *s, double t_end, double output_interval,
                               double probe_interval, double max_window);
 
+/* The grant: the smallest of the n participants' proposals for the next window
+ * (every one of them must stay stable over it), DBL_MAX when n is 0. */
+double fsi_window_smallest_proposal(const double *proposals, int n);
+
 /* The window after time t, given the smallest proposal of the participants. */
 fsi_window_plan fsi_window_schedule_next(fsi_window_schedule *s, double t, double dt_proposed);
 

@@ -89,12 +89,17 @@ int fluid_coupling_accumulate(fluid_coupling *c, const fluid_scheme *scheme,
         return -1;
     const double *f = c->force + (size_t)b->n_fixed * FSI_DIM;
     const double *v = p->v + (size_t)b->n_fixed * FSI_DIM;
-    double power = 0.0;
+    double power = 0.0, power_at_sent = 0.0, total[FSI_DIM] = {0};
     for (int k = 0; k < b->n * FSI_DIM; k++) {
         c->impulse[k] += h * f[k];
         power -= f[k] * v[k];
+        power_at_sent += f[k] * b->v_start[k];
+        total[k % FSI_DIM] += f[k];
     }
     c->work_on_fluid += h * power;
+    c->work_at_sent += h * power_at_sent;
+    for (int d = 0; d < FSI_DIM; d++)
+        c->impulse_sent[d] += h * total[d];
     return 0;
 }
 

@@ -37,6 +37,14 @@ typedef struct {
     double impedance;           /* rho0 c0 [Pa s/m] */
     double work_on_fluid;       /* work of the solid's particles on the fluid so far [J]:
                                  * sum of h (-F) . v at the steps' midpoints */
+    double work_at_sent;        /* sum of h F . u over the steps [J], u the velocity the
+                                 * solid sent for the window (the boundary's own velocity
+                                 * adds the sent acceleration's a tau): what the solid's
+                                 * loads do at the velocity it sent */
+    double impulse_sent[FSI_DIM];   /* sum h F over all boundary particles and steps
+                                     * [N s], summed from the forces themselves, not from
+                                     * 'impulse': the solid's total of what it received
+                                     * must equal it (tests/system/test_coupled_plate.sh) */
     fsi_neighbour_grid solid_grid;  /* the boundary particles, for the penetration check */
 } fluid_coupling;
 

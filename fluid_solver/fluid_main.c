@@ -77,6 +77,9 @@ typedef struct {
     int n_fluid;
     double *x0, *v0, *rho0, *drho, *accel, *grad_p;
     double energy_limit, kinetic0, compression0, potential0, energy_floor;
+    double momentum0[FSI_DIM];  /* of the fluid particles at the start [N s]: with the
+                                 * impulse sent to the solid and gravity's, the fluid's
+                                 * momentum budget (tests/system/test_coupled_plate.sh) */
     double potential_wrapped;   /* -sum m g . x that periodic wraps took away */
     double box_min[FSI_DIM], box_max[FSI_DIM];
     fsi_h5_writer *out;
@@ -119,6 +122,17 @@ static void free_run(fluid_run *s)
     free(s->drho);
     free(s->accel);
     free(s->grad_p);
+}
+
+/* sum m v of the fluid particles. */
+static void fluid_momentum(const fluid_particles *p, double *momentum)
+{
+    for (int d = 0; d < FSI_DIM; d++)
+        momentum[d] = 0.0;
+    for (int i = 0; i < p->n; i++)
+        if (p->flags[i] & FLUID_PARTICLE_FLUID)
+            for (int d = 0; d < FSI_DIM; d++)
+                momentum[d] += p->mass[i] * p->v[i * FSI_DIM + d];
 }
 
 static double kinetic_energy(const fluid_particles *p)
@@ -374,6 +388,7 @@ static int setup(fluid_run *s, fsi_participant *part)
             mass += p->mass[i];
     s->energy_floor = ENERGY_FLOOR * mass * pr->sound_speed * pr->sound_speed;
     s->kinetic0 = kinetic_energy(p);
+    fluid_momentum(p, s->momentum0);
     s->compression0 = compression_energy(p, pr);
     s->potential0 = potential_energy(p, pr->gravity);
 
@@ -822,6 +837,18 @@ int main(void)
                      "at most %d at once, in %ld windows; work of the solid on the fluid %.6g J",
                      s.coupling.n_windows, s.inside_max, s.inside_windows,
                      s.coupling.work_on_fluid);
+        if (s.coupling.n_windows > 0) {
+            char j[FSI_VECTOR_TEXT_SIZE], p0[FSI_VECTOR_TEXT_SIZE], p1[FSI_VECTOR_TEXT_SIZE];
+            double momentum[FSI_DIM];
+            fluid_momentum(&s.p, momentum);
+            fsi_info("loads sent to the solid: impulse (%s) N s, work at the velocity the "
+                     "solid sent %.9g J, work on the moving boundary %.9g J; fluid momentum "
+                     "(%s) N s at the start, (%s) N s at the end",
+                     fsi_vector_text(j, sizeof j, s.coupling.impulse_sent),
+                     s.coupling.work_at_sent, -s.coupling.work_on_fluid,
+                     fsi_vector_text(p0, sizeof p0, s.momentum0),
+                     fsi_vector_text(p1, sizeof p1, momentum));
+        }
     }
     free_run(&s);
     return fsi_close(part, &s.timers);

@@ -59,6 +59,14 @@ typedef struct {
                                      * plus the impedance's m c u (set once per window) */
     /* energy check */
     double energy0, work, work_in, energy_floor;
+    /* The fluid's loads as received (f_fluid, without the impedance term the solid adds
+     * itself): sum of F dt over the windows [N s]; their work at the window-mean
+     * velocity u sent to the fluid, sum of F . u dt [J] (the fluid moves its boundary at
+     * u, so this is the work it computes from its own forces); and their work over the
+     * solid's own motion, sum of F . (x - x_prev) over the sub-steps [J], which differs
+     * from the other by the one-window lag of u. The fluid logs what it sent;
+     * tests/system/test_coupled_plate.sh compares them. */
+    double fluid_impulse[FSI_DIM], fluid_work_at_sent, fluid_work;
     double box_min[FSI_DIM], box_max[FSI_DIM];
     fsi_h5_writer *out;
     fsi_timers timers;
@@ -308,10 +316,18 @@ static int advance(solid_run *s, double t0, double dt, int window)
         n = 1;
     double h = dt / (double)n;
     s->substeps += n;
+    for (int i = 0; i < p->n; i++)
+        for (int d = 0; d < FSI_DIM; d++) {
+            const int k = i * FSI_DIM + d;
+            s->fluid_impulse[d] += dt * s->f_fluid[k];
+            s->fluid_work_at_sent += dt * s->f_fluid[k] * s->iface.v_mean[k];
+        }
     for (long j = 0; j < n; j++) {
         double t = t0 + dt * (double)(j + 1) / (double)n;
         fsi_timer_start(&s->timers, s->t_integrate);
         solid_verlet_drift(p, h, s->x_prev);
+        for (int k = 0; k < p->n * FSI_DIM; k++)
+            s->fluid_work += s->f_fluid[k] * (p->x[k] - s->x_prev[k]);
         fsi_timer_stop(&s->timers, s->t_integrate);
 
         fsi_timer_start(&s->timers, s->t_force);
@@ -460,6 +476,13 @@ int main(void)
                  "of loads, gravity and fluid %.6g J (gross input %.6g J)",
                  solid_kinetic_energy(&s.p), solid_model_strain_energy(s.model, &s.p),
                  s.energy0, s.work, s.work_in);
+        if (fsi_coupled(part)) {
+            char j[FSI_VECTOR_TEXT_SIZE];
+            fsi_info("loads received from the fluid: impulse (%s) N s, work at the "
+                     "velocity sent %.9g J, work over the solid's motion %.9g J",
+                     fsi_vector_text(j, sizeof j, s.fluid_impulse), s.fluid_work_at_sent,
+                     s.fluid_work);
+        }
         /* One "bond update" is one directed bond through one internal-force call: the
          * unit bench/solid_validation.sh reports (docs/performance.md). */
         const double force_s = s.timers.seconds[s.t_force];

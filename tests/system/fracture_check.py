@@ -15,6 +15,12 @@ cut the ligament.
 intact: failure off. No damage in any frame, the run reached end_time, and the plate
 was stretched beyond the critical stretch at the notch tip (so the absence of damage
 is the switch's doing, not a too small load).
+onset CRACKED INTACT: the first bond breaks when the critical stretch is reached. The
+two runs are the same until a bond breaks, so the time at which the intact run's bond
+across the notch line at the tip reaches s0 (interpolated between its frames) must fall
+between the cracked run's last frame without damage and its first frame with damage,
+to a quarter of a frame interval (the stretch there grows by about 2 % of s0 per
+frame of 1 us: a critical stretch 10 % off moves the break by 4 frames).
 
 Prints one ok: or FAIL: line per check and a few measured numbers; exits 1 if any
 check failed. Needs h5py and numpy (/usr/bin/python3 on Debian).
@@ -189,7 +195,6 @@ def check_cracked(out, args):
 
 def check_intact(out, args):
     g = read_case(out)
-    dx = g["dx"]
     with h5py.File(os.path.join(out, "solid.h5"), "r") as h5:
         x0 = h5["static/x0"][:]
         series = frames(h5)
@@ -203,9 +208,7 @@ def check_intact(out, args):
               "run reached end_time: last frame at t = %.6g s" % t_end)
         # The pair of points straddling the notch line just ahead of the tip: its
         # stretch at the end, against the critical stretch the same case would break at.
-        tip = np.array(g["tip"])
-        top = np.argmin(np.hypot(x0[:, 0] - tip[0] - dx / 2, x0[:, 1] - tip[1] - dx / 2))
-        bottom = np.argmin(np.hypot(x0[:, 0] - tip[0] - dx / 2, x0[:, 1] - tip[1] + dx / 2))
+        top, bottom = tip_pair(x0, g)
         x = series[-1][1]["position"][:]
         stretch = np.linalg.norm(x[top] - x[bottom]) / np.linalg.norm(x0[top] - x0[bottom]) - 1
     s0 = critical_stretch(g)
@@ -213,15 +216,62 @@ def check_intact(out, args):
           "> critical stretch %.3g (%.1f times)" % (stretch, s0, stretch / s0))
 
 
+def tip_pair(x0, g):
+    """The two points straddling the notch line just ahead of the tip: the bond that
+    breaks first."""
+    dx, tip = g["dx"], np.array(g["tip"])
+    top = np.argmin(np.hypot(x0[:, 0] - tip[0] - dx / 2, x0[:, 1] - tip[1] - dx / 2))
+    bottom = np.argmin(np.hypot(x0[:, 0] - tip[0] - dx / 2, x0[:, 1] - tip[1] + dx / 2))
+    return top, bottom
+
+
+def check_onset(cracked, intact):
+    g = read_case(cracked)
+    s0 = critical_stretch(g)
+    with h5py.File(os.path.join(cracked, "solid.h5"), "r") as h5:
+        series = frames(h5)
+        first = next((k for k, (_, gr) in enumerate(series) if gr["damage"][:].max() > 0), None)
+        check(first is not None and first > 0, "the cracked run has frames before and after "
+              "its first broken bond")
+        if first is None or first == 0:
+            return
+        t_before, t_after = series[first - 1][0], series[first][0]
+    with h5py.File(os.path.join(intact, "solid.h5"), "r") as h5:
+        x0 = h5["static/x0"][:]
+        top, bottom = tip_pair(x0, g)
+        length0 = np.linalg.norm(x0[top] - x0[bottom])
+        history = [(t, np.linalg.norm(gr["position"][top] - gr["position"][bottom]) / length0 - 1)
+                   for t, gr in frames(h5)]
+    crossing = next((k for k in range(1, len(history)) if history[k][1] >= s0), None)
+    check(crossing is not None, "the intact run's tip bond reaches s0 = %.4g" % s0)
+    if crossing is None:
+        return
+    (ta, sa), (tb, sb) = history[crossing - 1], history[crossing]
+    t_s0 = ta + (s0 - sa) / (sb - sa) * (tb - ta)
+    slack = 0.25 * (t_after - t_before)
+    print("tip bond reaches s0 = %.4g at t = %.4g us (intact run); first broken bond between "
+          "%.4g and %.4g us (cracked run)" % (s0, 1e6 * t_s0, 1e6 * t_before, 1e6 * t_after))
+    check(t_before - slack <= t_s0 <= t_after + slack,
+          "first bond breaks when its stretch reaches s0: at %.4g us, the stretch reaches s0 "
+          "at %.4g us (the break is off by %.1f frames: is the critical stretch the model "
+          "uses s0 = %.4g?)" % (1e6 * t_after, 1e6 * t_s0,
+                                max(t_before - t_s0, t_s0 - t_after, 0) / (t_after - t_before),
+                                s0))
+
+
 def main():
     p = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    p.add_argument("mode", choices=["cracked", "intact"])
+    p.add_argument("mode", choices=["cracked", "intact", "onset"])
     p.add_argument("out")
+    p.add_argument("intact_out", nargs="?", help="onset: the intact run's folder")
     p.add_argument("--threshold", type=float, default=0.3)
     p.add_argument("--expect-line", type=float, default=None)
     p.add_argument("--expect-tip", type=float, default=None)
     args = p.parse_args()
-    (check_cracked if args.mode == "cracked" else check_intact)(args.out, args)
+    if args.mode == "onset":
+        check_onset(args.out, args.intact_out)
+    else:
+        (check_cracked if args.mode == "cracked" else check_intact)(args.out, args)
     if failures:
         print("fracture_check: %d check(s) failed" % len(failures), file=sys.stderr)
         sys.exit(1)

@@ -2,7 +2,9 @@
 # FSI_BIN_DIR and its own FSI_TEST_TMP from ctest.
 set -euo pipefail
 : "${FSI_SOURCE_DIR:?}" "${FSI_BIN_DIR:?}" "${FSI_TEST_TMP:?}"
-FSI_RUN="$FSI_BIN_DIR/fsi-run"
+# Every run gets window_timeout = 20 s (fsi_run_for_tests.sh): a deadlock fails in
+# seconds with the coupler's message, not at ctest's timeout.
+FSI_RUN="$FSI_SOURCE_DIR/tests/system/fsi_run_for_tests.sh"
 rm -rf "$FSI_TEST_TMP"
 mkdir -p "$FSI_TEST_TMP"
 cd "$FSI_TEST_TMP"

@@ -7,13 +7,17 @@
 source "$(dirname "$0")/lib.sh"
 small_case case.ini 0.3
 
-# (a) the solid never reports window 50; window_timeout 2 s.
+# (a) the solid never reports window 50; window_timeout 2 s. timeout(1) at 30 s: a
+# coupler that ignored window_timeout would otherwise hang the test until ctest's 600 s.
 set +e
 start=$(date +%s.%N)
-FSI_TEST_STALL="solid:50" "$FSI_RUN" case.ini --out stuck --set run.window_timeout=2 >stuck.txt 2>&1
+FSI_TEST_STALL="solid:50" timeout -k 5 30 "$FSI_RUN" case.ini --out stuck \
+  --set run.window_timeout=2 >stuck.txt 2>&1
 status=$?
 set -e
 took=$(echo "$(date +%s.%N) - $start" | bc)
+[ "$status" -ne 124 ] && [ "$status" -ne 137 ] ||
+  { cat stuck.txt; fail "stuck run not stopped after 30 s: the coupler's window_timeout (2 s) never fired"; }
 [ "$status" -eq 1 ] || { cat stuck.txt; fail "stuck run: exit $status, expected 1"; }
 grep -q "participant 'solid' alive but window 50 .* not done after 2 s" stuck.txt ||
   { cat stuck.txt; fail "stuck run: message does not name the stuck solid and its window"; }

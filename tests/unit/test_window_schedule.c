@@ -1,5 +1,7 @@
-/* The coupler's window schedule: windows never exceed the proposals or max_window,
- * end exactly on every output, probe and end time, and number frames 1, 2, ... */
+/* The coupler's window schedule: the grant is the smallest proposal, windows never
+ * exceed the proposals or max_window, end exactly on every output, probe and end
+ * time, and number frames 1, 2, ... */
+#include <float.h>
 #include <math.h>
 #include <stdio.h>
 
@@ -43,10 +45,35 @@ static long run_schedule(double t_end, double out, double probe, double max_wind
     return windows;
 }
 
+/* The grant of proposals p[0..n-1] must be the smallest: a larger one is a window
+ * over which some participant is not stable. */
+static void check_grant(const double *p, int n, double expected)
+{
+    double g = fsi_window_smallest_proposal(p, n);
+    CHECK(g == expected, "grant of %d proposals is %g s, not the smallest %g s: a "
+          "participant would run beyond its stable step", n, g, expected);
+}
+
 int main(void)
 {
     int frames;
     long probes;
+
+    const double fluid_first[] = {2.8e-5, 1e-3}, solid_first[] = {1e-3, 2.8e-5};
+    check_grant(fluid_first, 2, 2.8e-5);
+    check_grant(solid_first, 2, 2.8e-5);
+    const double three[] = {4e-4, 1e-4, 7e-4};
+    check_grant(three, 3, 1e-4);
+    const double one[] = {3e-4};
+    check_grant(one, 1, 3e-4);
+    CHECK(fsi_window_smallest_proposal(NULL, 0) == DBL_MAX, "no proposal grants %g s",
+          fsi_window_smallest_proposal(NULL, 0));
+    /* The grant then bounds the window the schedule plans. */
+    fsi_window_schedule g;
+    fsi_window_schedule_init(&g, 1.0, 0.1, 0.0, 1e-3);
+    fsi_window_plan gp = fsi_window_schedule_next(&g, 0.0,
+                                                  fsi_window_smallest_proposal(solid_first, 2));
+    CHECK(gp.dt == 2.8e-5, "the window after a grant of 2.8e-5 s is %g s", gp.dt);
 
     /* Proposal below max_window: 0.004 s windows, frames every 0.1 s, probes every 0.03 s. */
     long w = run_schedule(1.0, 0.1, 0.03, 0.007, 0.004, &frames, &probes);
