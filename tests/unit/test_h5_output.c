@@ -302,12 +302,19 @@ static void check_frame(hid_t file, int f)
     H5Gclose(g);
 }
 
-static void check_h5(const char *dir)
+/* DIR/NAME opened read-only, or -1 (counted as a failed check). */
+static hid_t open_read_only(const char *dir, const char *name)
 {
     char path[4200];
-    snprintf(path, sizeof path, "%s/particles.h5", dir);
+    snprintf(path, sizeof path, "%s/%s", dir, name);
     hid_t file = H5Fopen(path, H5F_ACC_RDONLY, H5P_DEFAULT);
     CHECK(file >= 0, "open %s", path);
+    return file;
+}
+
+static void check_h5(const char *dir)
+{
+    hid_t file = open_read_only(dir, "particles.h5");
     if (file < 0)
         return;
     check_root(file);
@@ -324,10 +331,7 @@ static void check_h5(const char *dir)
 /* The Polyvertex connectivity the sidecar points at: 0..n-1. */
 static void check_vertices(const char *dir)
 {
-    char path[4200];
-    snprintf(path, sizeof path, "%s/particles.frames/vertices_7.h5", dir);
-    hid_t file = H5Fopen(path, H5F_ACC_RDONLY, H5P_DEFAULT);
-    CHECK(file >= 0, "open %s", path);
+    hid_t file = open_read_only(dir, "particles.frames/vertices_7.h5");
     if (file < 0)
         return;
     int32_t index[7];
