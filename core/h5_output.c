@@ -563,7 +563,7 @@ static int write_xmf(const fsi_h5_writer *w)
     char *path = str_printf("%s/%s.xmf", w->dir, w->name);
     char *tmp = str_printf("%s/%s.xmf.tmp", w->dir, w->name);
     int rc = -1;
-    FILE *f = path && tmp ? fopen(tmp, "w") : NULL;
+    FILE *f = path && tmp ? fsi_fopen_checked(tmp, "w") : NULL;
     if (!f) {
         h5_error("h5 output: cannot write %s: %s", tmp ? tmp : w->name, strerror(errno));
         goto out;

@@ -1,8 +1,12 @@
+#define _GNU_SOURCE /* fopencookie */
 #include "log.h"
 
 #include <errno.h>
+#include <fcntl.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 static char log_name[64] = "fsi";
 static int write_errno; /* errno of the first message that could not be written */
@@ -58,14 +62,81 @@ void fsi_error(const char *fmt, ...)
     va_end(ap);
 }
 
+/* A stdio stream over a file descriptor that keeps the errno of its first failed
+ * write: stdio flushes its buffer in the middle of fprintf calls and later calls
+ * overwrite errno, so without it a full disk could only be reported as EIO. */
+typedef struct {
+    int fd;
+    int first_error;
+} checked_stream;
+
+static ssize_t checked_write(void *cookie, const char *buf, size_t size)
+{
+    checked_stream *s = cookie;
+    size_t done = 0;
+    while (done < size) {
+        ssize_t k = write(s->fd, buf + done, size - done);
+        if (k < 0 && errno == EINTR)
+            continue;
+        if (k <= 0) {
+            if (!s->first_error)
+                s->first_error = k < 0 ? errno : ENOSPC;
+            errno = s->first_error;
+            return done > 0 ? (ssize_t)done : -1;
+        }
+        done += (size_t)k;
+    }
+    return (ssize_t)done;
+}
+
+static int checked_close(void *cookie)
+{
+    checked_stream *s = cookie;
+    int err = s->first_error;
+    if (close(s->fd) != 0 && !err)
+        err = errno;
+    free(s);
+    if (err) {
+        errno = err;
+        return -1;
+    }
+    return 0;
+}
+
+FILE *fsi_fopen_checked(const char *path, const char *mode)
+{
+    int flags = O_WRONLY | O_CREAT | O_CLOEXEC | (mode[0] == 'a' ? O_APPEND : O_TRUNC);
+    checked_stream *s = calloc(1, sizeof *s);
+    if (!s)
+        return NULL;
+    s->fd = open(path, flags, 0644);
+    if (s->fd < 0) {
+        int err = errno;
+        free(s);
+        errno = err;
+        return NULL;
+    }
+    cookie_io_functions_t io = {.write = checked_write, .close = checked_close};
+    FILE *f = fopencookie(s, "w", io);
+    if (!f) {
+        int err = errno;
+        close(s->fd);
+        free(s);
+        errno = err;
+    }
+    return f;
+}
+
 int fsi_fclose_checked(FILE *f)
 {
     errno = 0;
     int bad = fflush(f) != 0 || ferror(f);
     int err = errno;
-    if (fclose(f) != 0 && !bad) {
+    /* A stream of fsi_fopen_checked reports its first write error on close. */
+    if (fclose(f) != 0) {
+        if (!bad || !err)
+            err = errno;
         bad = 1;
-        err = errno;
     }
     return bad ? (err ? err : EIO) : 0;
 }

@@ -21,6 +21,12 @@ void fsi_error(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
  * fsi run: the process's OUT/<role>.log, e.g. on a full disk). */
 int fsi_log_write_error(void);
 
+/* Opens path for writing ("w": truncate, "a": append) as a stdio stream that keeps
+ * the errno of its first failed write, so that fsi_fclose_checked reports the real
+ * reason (e.g. "No space left on device") even when stdio flushed in between. NULL
+ * with errno set when the file cannot be opened. */
+FILE *fsi_fopen_checked(const char *path, const char *mode);
+
 /* Flushes and closes a file written with stdio. Returns 0, or the errno of the first
  * failed write (EIO when the system gave none): a full disk shows up here at the
  * latest. The file is closed either way. */

@@ -469,7 +469,7 @@ static int write_summary(coupler *c)
 {
     char path[PATH_MAX + 16];
     snprintf(path, sizeof path, "%s/run.log", c->env.out_dir);
-    FILE *log = fopen(path, "a");
+    FILE *log = fsi_fopen_checked(path, "a");
     if (!log) {
         fsi_error("cannot append to %s: %s", path, strerror(errno));
         return -1;

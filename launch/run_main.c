@@ -144,7 +144,7 @@ static int close_log(FILE *log, const char *path)
 static int write_log_header(const char *path, int argc, char **argv, int64_t run_id,
                             const char *url, int isolated, const fsi_case *c)
 {
-    FILE *log = fopen(path, "w");
+    FILE *log = fsi_fopen_checked(path, "w");
     if (!log) {
         fprintf(stderr, "fsi run: cannot create %s: %s\n", path, strerror(errno));
         return -1;
@@ -179,7 +179,7 @@ static int append_log(const char *path, const char *fmt, ...) __attribute__((for
 
 static int append_log(const char *path, const char *fmt, ...)
 {
-    FILE *log = fopen(path, "a");
+    FILE *log = fsi_fopen_checked(path, "a");
     if (!log) {
         fprintf(stderr, "fsi run: cannot append to %s: %s\n", path, strerror(errno));
         return -1;
