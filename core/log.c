@@ -70,21 +70,32 @@ typedef struct {
     int first_error;
 } checked_stream;
 
-static ssize_t checked_write(void *cookie, const char *buf, size_t size)
+size_t fsi_write_all(int fd, const void *buf, size_t len, int *err)
 {
-    checked_stream *s = cookie;
     size_t done = 0;
-    while (done < size) {
-        ssize_t k = write(s->fd, buf + done, size - done);
+    while (done < len) {
+        ssize_t k = write(fd, (const char *)buf + done, len - done);
         if (k < 0 && errno == EINTR)
             continue;
         if (k <= 0) {
-            if (!s->first_error)
-                s->first_error = k < 0 ? errno : ENOSPC;
-            errno = s->first_error;
-            return done > 0 ? (ssize_t)done : -1;
+            *err = k < 0 ? errno : ENOSPC;
+            break;
         }
         done += (size_t)k;
+    }
+    return done;
+}
+
+static ssize_t checked_write(void *cookie, const char *buf, size_t size)
+{
+    checked_stream *s = cookie;
+    int err = 0;
+    size_t done = fsi_write_all(s->fd, buf, size, &err);
+    if (done < size) {
+        if (!s->first_error)
+            s->first_error = err;
+        errno = s->first_error;
+        return done > 0 ? (ssize_t)done : -1;
     }
     return (ssize_t)done;
 }

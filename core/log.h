@@ -21,6 +21,10 @@ void fsi_error(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
  * fsi run: the process's OUT/<role>.log, e.g. on a full disk). */
 int fsi_log_write_error(void);
 
+/* Writes len bytes of buf to fd, going on after short writes and EINTR. Returns the
+ * bytes written; when fewer than len, *err is the errno (ENOSPC when write gave 0). */
+size_t fsi_write_all(int fd, const void *buf, size_t len, int *err);
+
 /* Opens path for writing ("w": truncate, "a": append) as a stdio stream that keeps
  * the errno of its first failed write, so that fsi_fclose_checked reports the real
  * reason (e.g. "No space left on device") even when stdio flushed in between. NULL

@@ -1,5 +1,7 @@
 #include "probes_csv.h"
 
+#include "log.h"
+
 #include <errno.h>
 #include <fcntl.h>
 #include <stdio.h>
@@ -10,20 +12,14 @@
 /* Appends one complete line, or nothing: a partial write is truncated away. */
 static int write_line(fsi_probes_csv *csv, const char *line, size_t len)
 {
-    size_t done = 0;
-    while (done < len) {
-        ssize_t k = write(csv->fd, line + done, len - done);
-        if (k < 0 && errno == EINTR)
-            continue;
-        if (k <= 0) {
-            int err = k < 0 ? errno : ENOSPC;
-            snprintf(csv->error, sizeof csv->error, "cannot write %s: %s", csv->path,
-                     strerror(err));
-            if (done > 0 && ftruncate(csv->fd, csv->committed) == 0)
-                lseek(csv->fd, csv->committed, SEEK_SET);
-            return -1;
-        }
-        done += (size_t)k;
+    int err = 0;
+    size_t done = fsi_write_all(csv->fd, line, len, &err);
+    if (done < len) {
+        snprintf(csv->error, sizeof csv->error, "cannot write %s: %s", csv->path,
+                 strerror(err));
+        if (done > 0 && ftruncate(csv->fd, csv->committed) == 0)
+            lseek(csv->fd, csv->committed, SEEK_SET);
+        return -1;
     }
     csv->committed += (off_t)len;
     return 0;
