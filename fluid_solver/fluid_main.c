@@ -7,7 +7,7 @@
  *           when not given), the initial pressure, the scheme, probes, output file
  *   window  read the solid's state into the moving boundary particles
  *           (fluid_coupling.h; empty in a fluid-only run), sub-cycle the
- *           predictor-corrector of 000 Eq. 56 with the step chosen at every step from
+ *           scheme's step (fluid_scheme_step) with its length chosen at every step from
  *           the stable step, check health after every step and the energy after every
  *           window, publish the window's loads on the solid, probes, output; propose
  *           the stable step when coupled (the solid sub-cycles inside the fluid's
@@ -75,7 +75,7 @@ typedef struct {
     double t;           /* time of the current state (walls are put there) */
     double wall_work;   /* work of the moving walls on the fluid so far [J] */
     int n_fluid;
-    double *x0, *v0, *rho0, *drho, *accel, *grad_p;
+    double *drho, *accel, *grad_p;
     double energy_limit, kinetic0, compression0, potential0, energy_floor;
     double momentum0[FSI_DIM];  /* of the fluid particles at the start [N s]: with the
                                  * impulse sent to the solid and gravity's, the fluid's
@@ -90,7 +90,7 @@ typedef struct {
     /* The penetration check (fluid_coupling_count_inside), after every window. */
     long inside_windows;        /* windows with a fluid particle inside the solid */
     int inside_max;             /* most fluid particles inside at once */
-    int capacity;       /* particles x0 .. grad_p hold */
+    int capacity;       /* particles drho .. grad_p hold */
     int *order;         /* original index (output row) of the particle at each index of
                          * the fixed part; they are sorted by cell now and then */
     long reorder_interval, reordered_at;
@@ -116,9 +116,6 @@ static void free_run(fluid_run *s)
     free(s->order);
     fluid_geometry_free(&s->geometry);
     free(s->free_slip);
-    free(s->x0);
-    free(s->v0);
-    free(s->rho0);
     free(s->drho);
     free(s->accel);
     free(s->grad_p);
@@ -248,9 +245,6 @@ static int reserve_run_arrays(fluid_run *s)
     /* No zeroing: every step writes these before it reads them. */
     const size_t cap = fsi_grown_capacity((size_t)n), vec = cap * FSI_DIM * sizeof(double);
     int failed = 0;
-    s->x0 = fsi_grow(s->x0, vec, &failed);
-    s->v0 = fsi_grow(s->v0, vec, &failed);
-    s->rho0 = fsi_grow(s->rho0, cap * sizeof(double), &failed);
     s->drho = fsi_grow(s->drho, cap * sizeof(double), &failed);
     s->accel = fsi_grow(s->accel, vec, &failed);
     s->grad_p = fsi_grow(s->grad_p, vec, &failed);
@@ -479,61 +473,42 @@ static void wrap_periodic(fluid_run *s)
     }
 }
 
-/* One predictor-corrector step of 000 Eq. 56 for the fluid particles (rates at the
- * start state already in drho, accel):
- *   predictor  rho^{n+1/2} = rho^n + dt/2 drho^n,  v^{n+1/2} = v^n + dt/2 a^n,
- *              x^{n+1/2} = x^n + dt/2 v^n
- *   corrector  rho^{n+1} = rho^n + dt drho^{n+1/2},  v^{n+1} = v^n + dt a^{n+1/2},
- *              x^{n+1} = x^n + dt (v^n + v^{n+1}) / 2
- * (000 Eq. 56 as printed is garbled; the corrector's position update uses the mean
- * velocity over the step, i.e. the corrected mid-step velocity, which keeps the scheme
- * second order.) */
-static int step(fluid_run *s, double dt)
+/* The step's hooks (fluid_scheme.h): walls and boundary at time t, then the rates. */
+static int evaluate_at(void *owner, double t)
 {
-    fluid_particles *p = &s->p;
-    const int n = p->n;
-    fsi_timer_start(&s->timers, s->t_integrate);
-    memcpy(s->x0, p->x, (size_t)n * FSI_DIM * sizeof *p->x);
-    memcpy(s->v0, p->v, (size_t)n * FSI_DIM * sizeof *p->v);
-    memcpy(s->rho0, p->density, (size_t)n * sizeof *p->density);
-    for (int i = 0; i < n; i++) {
-        if (!(p->flags[i] & FLUID_PARTICLE_FLUID))
-            continue;
-        p->density[i] += 0.5 * dt * s->drho[i];
-        for (int d = 0; d < FSI_DIM; d++) {
-            p->x[i * FSI_DIM + d] += 0.5 * dt * p->v[i * FSI_DIM + d];
-            p->v[i * FSI_DIM + d] += 0.5 * dt * s->accel[i * FSI_DIM + d];
-        }
-    }
-    fsi_timer_stop(&s->timers, s->t_integrate);
-    const double t_start = s->t;
-    s->t = t_start + 0.5 * dt;     /* moving walls at the mid-step time */
-    if (evaluate(s) != 0)
-        return -1;
-    /* Midpoint rule for the work of moving walls (the energy check's budget) and the
-     * impulse on the solid's particles (the loads sent back). */
-    s->wall_work += dt * fluid_wall_motion_power(&s->motion, s->t, p, s->accel,
+    fluid_run *s = owner;
+    s->t = t;
+    return evaluate(s);
+}
+
+/* Midpoint rule for the work of moving walls (the energy check's budget) and the
+ * impulse on the solid's particles (the loads sent back). */
+static int midpoint(void *owner, double dt)
+{
+    fluid_run *s = owner;
+    s->wall_work += dt * fluid_wall_motion_power(&s->motion, s->t, &s->p, s->accel,
                                                  s->props.gravity);
-    if (fluid_coupling_accumulate(&s->coupling, s->scheme, p, dt) != 0) {
+    if (fluid_coupling_accumulate(&s->coupling, s->scheme, &s->p, dt) != 0) {
         snprintf(s->msg, sizeof s->msg, "out of memory for the loads on the solid");
         return -1;
     }
+    return 0;
+}
+
+/* One step of the scheme (rates at the start state already in drho, accel). */
+static int step(fluid_run *s, double dt)
+{
+    const fluid_step_hooks hooks = {s, evaluate_at, midpoint, s->drho, s->accel,
+                                    &s->timers, s->t_integrate};
+    const double t_start = s->t;
+    if (fluid_scheme_step(s->scheme, &s->p, t_start, dt, &hooks, s->msg, sizeof s->msg) != 0)
+        return -1;
     s->t = t_start + dt;
     fsi_timer_start(&s->timers, s->t_integrate);
-    for (int i = 0; i < n; i++) {
-        if (!(p->flags[i] & FLUID_PARTICLE_FLUID))
-            continue;
-        p->density[i] = s->rho0[i] + dt * s->drho[i];
-        for (int d = 0; d < FSI_DIM; d++) {
-            const int k = i * FSI_DIM + d;
-            p->v[k] = s->v0[k] + dt * s->accel[k];
-            p->x[k] = s->x0[k] + 0.5 * dt * (s->v0[k] + p->v[k]);
-        }
-    }
     if (fsi_periodic_any(&s->props.periodic))
         wrap_periodic(s);
     s->steps++;
-    fluid_scheme_after_step(s->scheme, p, s->steps);
+    fluid_scheme_after_step(s->scheme, &s->p, s->steps);
     fsi_timer_stop(&s->timers, s->t_integrate);
     return 0;
 }

@@ -1,8 +1,11 @@
-/* The functions every fluid scheme folder implements (ulph/, later wcsph/, isph/), the
+/* The functions every fluid scheme folder implements (ulph/, wcsph/, later isph/), the
  * way SWIFT keeps each hydro scheme behind the same small set of functions. The main
- * loop (fluid_main.c) owns the particles, the time integration, probes and output; a
- * scheme owns what it needs between steps (neighbour lists, operators, scratch) and
- * computes rates.
+ * loop (fluid_main.c) owns the particles, the choice of the step, the coupling, probes
+ * and output; a scheme owns what it needs between steps (neighbour lists, operators,
+ * scratch), computes rates and takes a step (weakly compressible schemes with the
+ * shared predictor-corrector, integrators/wc_predictor_corrector.h; a projection
+ * scheme its own). Shared physics lives beside the schemes: kernels/, eos/, walls/,
+ * contact/, neighbours/.
  *
  * Contract per evaluation of the rates at the particles' current state:
  *   - fluid particles: the scheme sets pressure (equation of state) and volume
@@ -53,6 +56,29 @@ double fluid_scheme_density(const fluid_scheme *s, double pressure);
  * Returns 0, or -1 with msg (memory, a non-finite position). */
 int fluid_scheme_rates(fluid_scheme *s, fluid_particles *p, double *drho_dt, double *dv_dt,
                        char *msg, size_t msg_size);
+
+/* What the main loop lends a step. */
+typedef struct {
+    void *owner;
+    /* Puts the walls and the moving boundary at time t and evaluates the rates at the
+     * particles' current state into drho and accel below. 0, or -1 (the owner keeps
+     * the message). */
+    int (*evaluate)(void *owner, double t);
+    /* Called once per step after the evaluation at its midpoint: the loads on the solid
+     * and the moving walls' work over the step of length dt by the midpoint rule.
+     * 0, or -1 (the owner's message). */
+    int (*midpoint)(void *owner, double dt);
+    double *drho, *accel;       /* the rates of the last evaluation, n and n * FSI_DIM */
+    fsi_timers *timers;         /* the integration's own time goes to integrate_timer */
+    int integrate_timer;
+} fluid_step_hooks;
+
+/* One step of length dt from time t, the rates at the current state already in
+ * hooks->drho, hooks->accel: fluid particles move, wall particles do not (the hooks'
+ * evaluate places them). Returns 0, or -1 with msg (or the owner's message, when a
+ * hook failed). */
+int fluid_scheme_step(fluid_scheme *s, fluid_particles *p, double t, double dt,
+                      const fluid_step_hooks *hooks, char *msg, size_t msg_size);
 
 /* Called by the main loop after each completed step (count = steps so far): e.g. the
  * density filter. Uses the neighbour lists of the last rates call. */

@@ -8,7 +8,7 @@
 
 #include "lattice_ball.h"
 #include "neighbour_grid.h"
-#include "ulph_kernel.h"
+#include "ulph_keys.h"
 
 int solid_interface_init(solid_interface_buffers *b, int n_particles)
 {

@@ -1,8 +1,7 @@
 /* The keys of the ULPH scheme (docs/cases.md is generated from this table). */
 #include "ulph_keys.h"
 
-#include "ulph_kernel.h"
-#include "ulph_verlet.h"
+#include "verlet_list.h"
 
 #define STR2(x) #x
 #define STR(x) STR2(x)
@@ -25,7 +24,7 @@ static const fsi_key_spec keys[] = {
      "damps every mode; stress: tau = 2 mu e' inside sigma of 000 Eq. 23 as printed, whose "
      "nested gradients leave a velocity alternating from one particle row to the next "
      "undamped (docs/ulph.md)."},
-    {"neighbour_skin", FSI_KEY_REAL, "-", STR(ULPH_VERLET_SKIN), FSI_BOUND_MIN | FSI_BOUND_MAX, 0,
+    {"neighbour_skin", FSI_KEY_REAL, "-", STR(FLUID_VERLET_SKIN), FSI_BOUND_MIN | FSI_BOUND_MAX, 0,
      1, NULL, "Skin of the candidate neighbour lists as a fraction of the support delta: "
      "the lists hold the particles within delta (1 + skin) and are rebuilt when a particle "
      "has moved half the skin (docs/ulph.md, Cost); 0 rebuilds them at every evaluation. "

@@ -4,6 +4,10 @@
 
 #include "case_file.h"
 
+/* The seed paper's kernel (000 §2.1.3, after Eq. 17): h = 1.2 dx, delta = 3 h. */
+#define ULPH_KERNEL_H_OVER_DX 1.2
+#define ULPH_KERNEL_SUPPORT_FACTOR 3.0
+
 extern const fsi_key_table fsi_ulph_keys;
 
 #endif

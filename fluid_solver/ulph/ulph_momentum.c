@@ -6,7 +6,7 @@
 #include <string.h>
 
 #include "small_tensor.h"
-#include "ulph_contact.h"
+#include "soft_contact.h"
 
 int ulph_momentum_reserve(ulph_momentum_scratch *s, int n)
 {
@@ -56,7 +56,7 @@ typedef struct {
     const double *vv;           /* velocity_for_viscosity */
     const double *A;            /* sigma M^-1 per particle */
     double av, eps2, mu_laplacian;
-    double contact_k_c2, spacing, contact_inv_eta_scale; /* ulph_contact.h */
+    double contact_k_c2, spacing, contact_inv_eta_scale; /* soft_contact.h */
 } pair_context;
 
 /* The force density on fluid particle I from neighbour J (entry k of I's row); the
@@ -66,7 +66,7 @@ static inline void pair_force(const pair_context *c, int i, int64_t k, double tr
 {
     const ulph_operators *ops = c->ops;
     const fluid_particles *p = c->p;
-    const int j = ops->neighbour[k];
+    const int j = ops->pairs.neighbour[k];
     const double *Ai = &c->A[(size_t)i * FSI_MAT_SIZE], *Aj = &c->A[(size_t)j * FSI_MAT_SIZE];
     double xij[FSI_DIM], vx = 0.0, r2 = 0.0, sum[FSI_MAT_SIZE];
     ulph_pair_vector(ops, p->x, i, j, xij);
@@ -78,7 +78,7 @@ static inline void pair_force(const pair_context *c, int i, int64_t k, double tr
         sum[m] = Ai[m] + Aj[m];
     double f[FSI_DIM];
     fsi_mat_vec(sum, xij, f);
-    const double wv = ops->w[k] * p->volume[j];
+    const double wv = ops->pairs.w[k] * p->volume[j];
     /* g_IJ = w V_J M_I^-1 x_IJ (ulph_operators.h): 000 Eq. 26 per pair. */
     /* min(vx, 0) rather than a branch around the division: the sign of vx is a coin
      * toss per pair (a mispredicted branch each time), and av * 0 / (r2 + eps2) is 0. */
@@ -97,7 +97,7 @@ static inline void pair_force(const pair_context *c, int i, int64_t k, double tr
         if (r2 < range * range) {
             /* 004 Eq. 21 as a force density on I: rho_I a_IJ, along x_I - x_J = -xij. */
             const double push = p->density[i] *
-                                ulph_contact_factor(sqrt(r2), range, c->contact_k_c2,
+                                soft_contact_factor(sqrt(r2), range, c->contact_k_c2,
                                                     c->contact_inv_eta_scale);
             for (int d = 0; d < FSI_DIM; d++)
                 out[d] -= push * xij[d];
@@ -135,13 +135,13 @@ void ulph_momentum_rates(const ulph_operators *ops, const ulph_momentum_params *
         ulph_gradient_vector(ops, velocity_for_viscosity, L);
     /* Continuity sees the walls' own velocity (no penetration), not the virtual one. */
     ulph_divergence(ops, p->v, scratch->divergence);
-#pragma omp parallel for schedule(dynamic, ULPH_CHUNK) if (n >= ULPH_PARALLEL_MIN_PARTICLES)
+#pragma omp parallel for schedule(dynamic, FLUID_CHUNK) if (n >= FLUID_PARALLEL_MIN_PARTICLES)
     for (int i = 0; i < n; i++)
         stress_shape(ops, p, mu_stress, &L[(size_t)i * FSI_MAT_SIZE], i,
                      &A[(size_t)i * FSI_MAT_SIZE]);
 
     const pair_context c = make_context(ops, prm, p, velocity_for_viscosity, A);
-#pragma omp parallel for schedule(dynamic, ULPH_CHUNK) if (n >= ULPH_PARALLEL_MIN_PARTICLES)
+#pragma omp parallel for schedule(dynamic, FLUID_CHUNK) if (n >= FLUID_PARALLEL_MIN_PARTICLES)
     for (int i = 0; i < n; i++) {
         double *a_i = &dv_dt[i * FSI_DIM];
         if (!(p->flags[i] & FLUID_PARTICLE_FLUID)) {
@@ -152,7 +152,7 @@ void ulph_momentum_rates(const ulph_operators *ops, const ulph_momentum_params *
         drho_dt[i] = -p->density[i] * scratch->divergence[i];
         double force[FSI_DIM] = {0};
         const double trace_i = fsi_mat_trace(&ops->shape[(size_t)i * FSI_MAT_SIZE]);
-        for (int64_t k = ops->offset[i]; k < ops->offset[i + 1]; k++) {
+        for (int64_t k = ops->pairs.offset[i]; k < ops->pairs.offset[i + 1]; k++) {
             double f[FSI_DIM];
             pair_force(&c, i, k, trace_i, f);
             for (int d = 0; d < FSI_DIM; d++)
@@ -170,19 +170,19 @@ void ulph_boundary_loads(const ulph_operators *ops, const ulph_momentum_params *
     const int n = p->n;
     const pair_context c = make_context(ops, prm, p, velocity_for_viscosity,
                                         scratch->stress_shape);
-#pragma omp parallel for schedule(dynamic, ULPH_CHUNK) if (n >= ULPH_PARALLEL_MIN_PARTICLES)
+#pragma omp parallel for schedule(dynamic, FLUID_CHUNK) if (n >= FLUID_PARALLEL_MIN_PARTICLES)
     for (int b = 0; b < n; b++) {
         double *f_b = &force[b * FSI_DIM];
         memset(f_b, 0, FSI_DIM * sizeof *f_b);
         if (!(p->flags[b] & FLUID_PARTICLE_MOVING_BOUNDARY))
             continue;
-        for (int64_t kb = ops->offset[b]; kb < ops->offset[b + 1]; kb++) {
-            const int i = ops->neighbour[kb];
+        for (int64_t kb = ops->pairs.offset[b]; kb < ops->pairs.offset[b + 1]; kb++) {
+            const int i = ops->pairs.neighbour[kb];
             if (!(p->flags[i] & FLUID_PARTICLE_FLUID))
                 continue;
             /* b's entry in i's row: the same w and g_IB the rates used. */
-            for (int64_t k = ops->offset[i]; k < ops->offset[i + 1]; k++) {
-                if (ops->neighbour[k] != b)
+            for (int64_t k = ops->pairs.offset[i]; k < ops->pairs.offset[i + 1]; k++) {
+                if (ops->pairs.neighbour[k] != b)
                     continue;
                 double f[FSI_DIM];
                 pair_force(&c, i, k, fsi_mat_trace(&ops->shape[(size_t)i * FSI_MAT_SIZE]), f);

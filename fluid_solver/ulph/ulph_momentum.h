@@ -13,7 +13,7 @@ typedef struct {
     double h, c0, rho0;         /* smoothing length, sound speed, reference density */
     double gravity[FSI_DIM];
     int viscous_laplacian;      /* 1: the pairwise Laplacian below instead of tau in Eq. 23 */
-    double contact;             /* k of the wall contact (ulph_contact.h, 004 Eq. 21); 0: off */
+    double contact;             /* k of the wall contact (soft_contact.h, 004 Eq. 21); 0: off */
     double spacing;             /* dx of the fluid: the contact reaches (dx + dx_J) / 2 [m] */
 } ulph_momentum_params;
 
@@ -52,7 +52,7 @@ void ulph_momentum_free(ulph_momentum_scratch *s);
  * particle's pressure counts as max(p_I, 0) (with tension = true p_I may be negative,
  * and -p_I M_I^-1 would draw I into the wall).
  * Against a wall or moving boundary particle J closer than dx the pair term also carries
- * the soft contact of ulph_contact.h (004 Eqs. 21-24), rho_I a_IJ, when prm->contact > 0.
+ * the soft contact of soft_contact.h (004 Eqs. 21-24), rho_I a_IJ, when prm->contact > 0.
  * Pressures, densities and volumes must be current (walls included). */
 void ulph_momentum_rates(const ulph_operators *ops, const ulph_momentum_params *prm,
                          const fluid_particles *p, const double *velocity_for_viscosity,

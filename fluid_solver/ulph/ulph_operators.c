@@ -1,5 +1,5 @@
 /* The non-local operators of ULPH (000 Eqs. 8-15) over a CSR neighbour list built
- * each evaluation from candidate lists (ulph_verlet.h): see ulph_operators.h.
+ * each evaluation from candidate lists (verlet_list.h): see ulph_operators.h.
  *
  * The build makes two passes over the particles, each parallel with no shared
  * writes: pass 1 counts each particle's candidates within the support (its row
@@ -24,9 +24,9 @@ void ulph_operators_init(ulph_operators *ops)
 void ulph_operators_free(ulph_operators *ops)
 {
     const double max_condition = ops->max_condition;
-    free(ops->offset);
-    free(ops->neighbour);
-    free(ops->w);
+    free(ops->pairs.offset);
+    free(ops->pairs.neighbour);
+    free(ops->pairs.w);
     free(ops->g);
     free(ops->shape);
     free(ops->shape_inv);
@@ -38,11 +38,11 @@ void ulph_operators_free(ulph_operators *ops)
 /* Room for n particles; 0, or -1 when memory runs out. */
 static int reserve_points(ulph_operators *ops, int n)
 {
-    if (ops->offset && n <= ops->point_capacity)
+    if (ops->pairs.offset && n <= ops->point_capacity)
         return 0;
     const size_t cap = (size_t)n + (size_t)n / 4 + 16;
     int failed = 0;
-    ops->offset = fsi_grow(ops->offset, (cap + 1) * sizeof *ops->offset, &failed);
+    ops->pairs.offset = fsi_grow(ops->pairs.offset, (cap + 1) * sizeof *ops->pairs.offset, &failed);
     ops->shape = fsi_grow(ops->shape, cap * FSI_MAT_SIZE * sizeof *ops->shape, &failed);
     ops->shape_inv = fsi_grow(ops->shape_inv, cap * FSI_MAT_SIZE * sizeof *ops->shape_inv,
                                &failed);
@@ -60,8 +60,8 @@ static int reserve_pairs(ulph_operators *ops, int64_t n_pairs)
         return 0;
     const size_t cap = (size_t)n_pairs + (size_t)n_pairs / 4 + 64;
     int failed = 0;
-    ops->neighbour = fsi_grow(ops->neighbour, cap * sizeof *ops->neighbour, &failed);
-    ops->w = fsi_grow(ops->w, cap * sizeof *ops->w, &failed);
+    ops->pairs.neighbour = fsi_grow(ops->pairs.neighbour, cap * sizeof *ops->pairs.neighbour, &failed);
+    ops->pairs.w = fsi_grow(ops->pairs.w, cap * sizeof *ops->pairs.w, &failed);
     ops->g = fsi_grow(ops->g, cap * FSI_DIM * sizeof *ops->g, &failed);
     if (failed)
         return -1;
@@ -92,8 +92,8 @@ static int shape_inverse(const double *m, double *m_inv, double max_condition)
 }
 
 /* Pass 1: the length of particle i's row, its candidates within the support. */
-static int64_t row_length(const ulph_operators *ops, const ulph_kernel *k,
-                          const ulph_verlet *list, const double *x, int i)
+static int64_t row_length(const ulph_operators *ops, const gaussian_kernel *k,
+                          const fluid_verlet *list, const double *x, int i)
 {
     int64_t count = 0;
     for (int64_t c = list->offset[i]; c < list->offset[i + 1]; c++) {
@@ -108,12 +108,12 @@ static int64_t row_length(const ulph_operators *ops, const ulph_kernel *k,
 
 /* Pass 2: fills particle i's row, M_I, M_I^-1 and g; returns 1 when the particle is
  * flagged ULPH_SINGULAR_SHAPE, else 0. */
-static int fill_row(ulph_operators *ops, const ulph_kernel *k, const ulph_verlet *list,
+static int fill_row(ulph_operators *ops, const gaussian_kernel *k, const fluid_verlet *list,
                     const fluid_particles *p, int i)
 {
     const double *restrict x = p->x;
     const double *restrict volume = p->volume;
-    const int64_t first = ops->offset[i];
+    const int64_t first = ops->pairs.offset[i];
     double m[FSI_MAT_SIZE];
     fsi_mat_zero(m);
     int informative = 0; /* neighbours that add to M: w V_J > 0 at a non-zero distance */
@@ -132,15 +132,15 @@ static int fill_row(ulph_operators *ops, const ulph_kernel *k, const ulph_verlet
             continue;
         for (int d = 0; d < FSI_DIM; d++)
             ops->g[e * FSI_DIM + d] = rel[d]; /* x_IJ for now, g_IJ below */
-        ops->neighbour[e] = j;
-        ops->w[e] = r2;
+        ops->pairs.neighbour[e] = j;
+        ops->pairs.w[e] = r2;
         e++;
     }
     const int64_t end = e; /* == offset[i + 1]: pass 1 saw the same neighbours */
-    ulph_kernel_w2_row(k, ops->w + first, end - first);
+    gaussian_kernel_w2_row(k, ops->pairs.w + first, end - first);
     for (int64_t q = first; q < end; q++) {
         const double *rel = ops->g + q * FSI_DIM;
-        const double wv = ops->w[q] * volume[ops->neighbour[q]];
+        const double wv = ops->pairs.w[q] * volume[ops->pairs.neighbour[q]];
         double r2 = 0.0;
         for (int d = 0; d < FSI_DIM; d++)
             r2 += rel[d] * rel[d];
@@ -171,28 +171,28 @@ static int fill_row(ulph_operators *ops, const ulph_kernel *k, const ulph_verlet
         double *g = ops->g + q2 * FSI_DIM;
         double rel[FSI_DIM];
         for (int d = 0; d < FSI_DIM; d++)
-            rel[d] = ops->w[q2] * volume[ops->neighbour[q2]] * g[d];
+            rel[d] = ops->pairs.w[q2] * volume[ops->pairs.neighbour[q2]] * g[d];
         fsi_mat_vec(m_inv, rel, g); /* g_IJ = M_I^-1 (w V_J x_IJ) */
     }
     return 0;
 }
 
-int ulph_operators_update_list(ulph_operators *ops, const ulph_kernel *k,
-                               const ulph_verlet *list, const fluid_particles *p)
+int ulph_operators_update_list(ulph_operators *ops, const gaussian_kernel *k,
+                               const fluid_verlet *list, const fluid_particles *p)
 {
     const int n = p->n;
-    ops->n = 0;
-    ops->n_pairs = 0;
+    ops->pairs.n = 0;
+    ops->pairs.n_pairs = 0;
     ops->n_singular = 0;
-    ops->periodic = list->periodic;
+    ops->pairs.periodic = list->periodic;
     if (list->n != n || n < 0 || reserve_points(ops, n) != 0) {
         ulph_operators_free(ops);
         return -1;
     }
-    const int parallel = n >= ULPH_PARALLEL_MIN_PARTICLES;
-    int64_t *offset = ops->offset;
+    const int parallel = n >= FLUID_PARALLEL_MIN_PARTICLES;
+    int64_t *offset = ops->pairs.offset;
     offset[0] = 0;
-#pragma omp parallel for schedule(dynamic, ULPH_CHUNK) if (parallel)
+#pragma omp parallel for schedule(dynamic, FLUID_CHUNK) if (parallel)
     for (int i = 0; i < n; i++)
         offset[i + 1] = row_length(ops, k, list, p->x, i);
     for (int i = 0; i < n; i++)
@@ -202,39 +202,39 @@ int ulph_operators_update_list(ulph_operators *ops, const ulph_kernel *k,
         return -1;
     }
     int n_singular = 0;
-#pragma omp parallel for schedule(dynamic, ULPH_CHUNK) if (parallel) reduction(+ : n_singular)
+#pragma omp parallel for schedule(dynamic, FLUID_CHUNK) if (parallel) reduction(+ : n_singular)
     for (int i = 0; i < n; i++)
         n_singular += fill_row(ops, k, list, p, i);
-    ops->n = n;
-    ops->n_pairs = offset[n];
+    ops->pairs.n = n;
+    ops->pairs.n_pairs = offset[n];
     ops->n_singular = n_singular;
     return 0;
 }
 
-int ulph_operators_update(ulph_operators *ops, const ulph_kernel *k,
+int ulph_operators_update(ulph_operators *ops, const gaussian_kernel *k,
                           const fsi_neighbour_grid *grid, const fluid_particles *p)
 {
-    ulph_verlet list;
-    ulph_verlet_init(&list);
-    int rc = ulph_verlet_build(&list, grid, p, k->support, 0);
+    fluid_verlet list;
+    fluid_verlet_init(&list);
+    int rc = fluid_verlet_build(&list, grid, p, k->support, 0);
     if (rc == 0)
         rc = ulph_operators_update_list(ops, k, &list, p);
     else
         ulph_operators_free(ops);
-    ulph_verlet_free(&list);
+    fluid_verlet_free(&list);
     return rc;
 }
 
 void ulph_gradient_scalar(const ulph_operators *ops, const double *f, double *grad)
 {
-    const int n = ops->n;
-#pragma omp parallel for schedule(dynamic, ULPH_CHUNK) if (n >= ULPH_PARALLEL_MIN_PARTICLES)
+    const int n = ops->pairs.n;
+#pragma omp parallel for schedule(dynamic, FLUID_CHUNK) if (n >= FLUID_PARALLEL_MIN_PARTICLES)
     for (int i = 0; i < n; i++) {
         double s[FSI_DIM] = {0};
         if (!(ops->flags[i] & ULPH_SINGULAR_SHAPE)) {
             const double fi = f[i];
-            for (int64_t q = ops->offset[i]; q < ops->offset[i + 1]; q++) {
-                const double df = f[ops->neighbour[q]] - fi;
+            for (int64_t q = ops->pairs.offset[i]; q < ops->pairs.offset[i + 1]; q++) {
+                const double df = f[ops->pairs.neighbour[q]] - fi;
                 const double *g = ops->g + q * FSI_DIM;
                 for (int d = 0; d < FSI_DIM; d++)
                     s[d] += df * g[d];
@@ -247,14 +247,14 @@ void ulph_gradient_scalar(const ulph_operators *ops, const double *f, double *gr
 
 void ulph_gradient_vector(const ulph_operators *ops, const double *u, double *grad)
 {
-    const int n = ops->n;
-#pragma omp parallel for schedule(dynamic, ULPH_CHUNK) if (n >= ULPH_PARALLEL_MIN_PARTICLES)
+    const int n = ops->pairs.n;
+#pragma omp parallel for schedule(dynamic, FLUID_CHUNK) if (n >= FLUID_PARALLEL_MIN_PARTICLES)
     for (int i = 0; i < n; i++) {
         double s[FSI_MAT_SIZE] = {0};
         if (!(ops->flags[i] & ULPH_SINGULAR_SHAPE)) {
             const double *ui = u + (int64_t)i * FSI_DIM;
-            for (int64_t q = ops->offset[i]; q < ops->offset[i + 1]; q++) {
-                const double *uj = u + (int64_t)ops->neighbour[q] * FSI_DIM;
+            for (int64_t q = ops->pairs.offset[i]; q < ops->pairs.offset[i + 1]; q++) {
+                const double *uj = u + (int64_t)ops->pairs.neighbour[q] * FSI_DIM;
                 double du[FSI_DIM];
                 for (int a = 0; a < FSI_DIM; a++)
                     du[a] = uj[a] - ui[a];
@@ -267,14 +267,14 @@ void ulph_gradient_vector(const ulph_operators *ops, const double *u, double *gr
 
 void ulph_divergence(const ulph_operators *ops, const double *u, double *div)
 {
-    const int n = ops->n;
-#pragma omp parallel for schedule(dynamic, ULPH_CHUNK) if (n >= ULPH_PARALLEL_MIN_PARTICLES)
+    const int n = ops->pairs.n;
+#pragma omp parallel for schedule(dynamic, FLUID_CHUNK) if (n >= FLUID_PARALLEL_MIN_PARTICLES)
     for (int i = 0; i < n; i++) {
         double s = 0.0;
         if (!(ops->flags[i] & ULPH_SINGULAR_SHAPE)) {
             const double *ui = u + (int64_t)i * FSI_DIM;
-            for (int64_t q = ops->offset[i]; q < ops->offset[i + 1]; q++) {
-                const double *uj = u + (int64_t)ops->neighbour[q] * FSI_DIM;
+            for (int64_t q = ops->pairs.offset[i]; q < ops->pairs.offset[i + 1]; q++) {
+                const double *uj = u + (int64_t)ops->pairs.neighbour[q] * FSI_DIM;
                 const double *g = ops->g + q * FSI_DIM;
                 for (int a = 0; a < FSI_DIM; a++)
                     s += (uj[a] - ui[a]) * g[a];

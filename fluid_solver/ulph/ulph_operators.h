@@ -3,7 +3,7 @@
  * support.
  *
  * With x_IJ = x_J - x_I, A(f) = f_J - f_I (000, below Eq. 10), w the kernel
- * (ulph_kernel.h) and V_J the neighbour's volume:
+ * (gaussian_kernel.h) and V_J the neighbour's volume:
  *
  *     M_I      = sum_J w(x_IJ) V_J x_IJ (x) x_IJ                (000 Eq. 15, from Eq. 11)
  *     grad f_I = sum_J w(x_IJ) V_J A(f) M_I^-1 x_IJ             (000 Eq. 13, from Eq. 9)
@@ -59,8 +59,10 @@
 #include "fluid_particles.h"
 #include "neighbour_grid.h"
 #include "small_tensor.h"
-#include "ulph_kernel.h"
-#include "ulph_verlet.h"
+#include "gaussian_kernel.h"
+#include "verlet_list.h"
+#include "fluid_pairs.h"
+#include "fluid_parallel.h"
 
 /* Default bound on the Frobenius condition number |M| |M^-1| of a usable shape
  * tensor (ulph_operators.max_condition; at least FSI_DIM for any M). It is not about
@@ -76,31 +78,15 @@
  * condition numbers of 112-187 (C5, docs/ulph.md). docs/ulph.md has the table. */
 #define ULPH_MAX_CONDITION_M 1e2
 
-/* Below this many particles the loops run on one thread (a fork costs more than the
- * work; the results are the same either way). */
-#define ULPH_PARALLEL_MIN_PARTICLES 128
-
-/* Particles per chunk of the parallel loops, handed out dynamically. The work per
- * particle is far from even: fluid particles come first, wall particles last, and
- * idle walls (ulph_verlet.h) and most walls' loops do almost nothing, so a static split
- * in halves left one thread with nearly all of it; chunks also let a thread that keeps
- * its core take over from one that lost it to another job. Every particle's results
- * are computed alone, so they do not depend on which thread takes it. */
-#define ULPH_CHUNK 64
-
 /* Per-particle flags (ulph_operators.flags). */
 enum {
     ULPH_SINGULAR_SHAPE = 1,    /* M^-1 unusable: M^-1 = 0, gradients zero (the rule above) */
-    ULPH_IDLE_WALL = 2,         /* an idle wall (ulph_verlet.h): empty row, M = M^-1 = 0 */
+    ULPH_IDLE_WALL = 2,         /* an idle wall (verlet_list.h): empty row, M = M^-1 = 0 */
 };
 
 /* Read-only for callers (except max_condition, which may be set before an update). */
 typedef struct {
-    int n;                  /* particles of the last update */
-    int64_t n_pairs;        /* directed pairs (each pair twice) */
-    int64_t *offset;        /* n + 1: I's neighbours are offset[I] .. offset[I+1]-1 */
-    int32_t *neighbour;     /* J */
-    double *w;              /* w(|x_IJ|) (000 Eq. 17) [1/m^DIM] */
+    fluid_pairs pairs;      /* the neighbours within the support, w = w(|x_IJ|) (000 Eq. 17) */
     double *g;              /* w V_J M_I^-1 x_IJ, FSI_DIM each [1/m]; zero for a flagged I */
     double *shape;          /* M_I (000 Eq. 15), FSI_MAT_SIZE each, row-major [m^2] */
     double *shape_inv;      /* M_I^-1, FSI_MAT_SIZE each [1/m^2]; zero for a flagged I */
@@ -109,17 +95,13 @@ typedef struct {
     double max_condition;   /* bound of the rule above */
     int point_capacity;     /* allocated sizes */
     int64_t pair_capacity;
-    fsi_periodic periodic;  /* the grid's periodic axes at the last update */
 } ulph_operators;
 
-/* x_IJ = x_J - x_I, the nearest periodic image along periodic axes: every pair
- * computation (operators, momentum, walls, filter) takes its vector from here. */
+/* x_IJ = x_J - x_I of the operators' pairs (fluid_pair_vector). */
 static inline void ulph_pair_vector(const ulph_operators *ops, const double *x, int i, int j,
                                     double *rel)
 {
-    for (int d = 0; d < FSI_DIM; d++)
-        rel[d] = x[(int64_t)j * FSI_DIM + d] - x[(int64_t)i * FSI_DIM + d];
-    fsi_periodic_min_image(&ops->periodic, rel);
+    fluid_pair_vector(&ops->pairs, x, i, j, rel);
 }
 
 /* Empty operators (no allocation), max_condition = ULPH_MAX_CONDITION_M. */
@@ -132,16 +114,16 @@ void ulph_operators_free(ulph_operators *ops);
  * with volumes p->volume. grid must have been built from p->x (any cell size; the
  * support k->support is the natural one). Returns 0, or -1 when the grid does not
  * hold p->n points or memory runs out (ops is then empty). */
-int ulph_operators_update(ulph_operators *ops, const ulph_kernel *k,
+int ulph_operators_update(ulph_operators *ops, const gaussian_kernel *k,
                           const fsi_neighbour_grid *grid, const fluid_particles *p);
 
-/* The same from candidate lists built (or kept, ulph_verlet_update) for p, with every
+/* The same from candidate lists built (or kept, fluid_verlet_update) for p, with every
  * pair now within the support among them: rows hold the candidates within the support
  * in the candidates' order; an idle wall's row is empty and flagged ULPH_IDLE_WALL
  * (not counted in n_singular). ulph_operators_update is this with candidates from the
  * grid at the support itself and no idle walls. */
-int ulph_operators_update_list(ulph_operators *ops, const ulph_kernel *k,
-                               const ulph_verlet *list, const fluid_particles *p);
+int ulph_operators_update_list(ulph_operators *ops, const gaussian_kernel *k,
+                               const fluid_verlet *list, const fluid_particles *p);
 
 /* grad f (000 Eq. 13) of the scalar field f[n]: grad[i * FSI_DIM + a] = df/dx_a. */
 void ulph_gradient_scalar(const ulph_operators *ops, const double *f, double *grad);

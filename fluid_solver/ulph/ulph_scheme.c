@@ -1,6 +1,6 @@
 /* The ULPH scheme behind fluid_scheme.h (000 §2.1, §2.3): one evaluation of the rates
  * is
- *   1. neighbour lists (from candidate lists with a skin, ulph_verlet), shape tensors
+ *   1. neighbour lists (from candidate lists with a skin, fluid_verlet), shape tensors
  *      M and M^-1 at the current positions with V = m / rho (ulph_operators);
  *   2. pressure of every fluid particle from its density (Tait, 000 Eq. 6);
  *   3. wall particles from the fluid around them (000 Eqs. 50-54, ulph_walls);
@@ -18,11 +18,13 @@
 #include "grow.h"
 #include "neighbour_grid.h"
 #include "small_tensor.h"
-#include "ulph_eos.h"
-#include "ulph_kernel.h"
+#include "tait_eos.h"
+#include "gaussian_kernel.h"
+#include "ulph_keys.h"
 #include "ulph_momentum.h"
 #include "ulph_operators.h"
-#include "ulph_walls.h"
+#include "ghost_walls.h"
+#include "wc_predictor_corrector.h"
 
 /* The phases of one evaluation, timed separately (fluid_scheme_use_timers). */
 enum { PHASE_SEARCH, PHASE_OPERATORS, PHASE_STATE, PHASE_WALLS, PHASE_FILTER, PHASE_MOMENTUM,
@@ -32,10 +34,10 @@ static const char *const phase_name[N_PHASES] = {
     "rates: walls", "rates: density filter", "rates: momentum"};
 
 struct fluid_scheme {
-    ulph_kernel kernel;
-    ulph_eos eos;
+    gaussian_kernel kernel;
+    tait_eos eos;
     ulph_momentum_params momentum;
-    ulph_verlet list;
+    fluid_verlet list;
     double skin;                /* of the candidate lists [m] */
     ulph_operators ops;
     ulph_momentum_scratch scratch;
@@ -46,6 +48,7 @@ struct fluid_scheme {
     int filter_due;
     int tension;
     int capacity; /* particles the scratch arrays hold */
+    fluid_wc_integrator integrator; /* 000 Eq. 56 */
     fsi_timers *timers;         /* NULL: not timed */
     int phase[N_PHASES];        /* their indices in timers */
 };
@@ -59,7 +62,7 @@ void fluid_scheme_use_timers(fluid_scheme *s, fsi_timers *t)
 
 void fluid_scheme_particles_reordered(fluid_scheme *s)
 {
-    ulph_verlet_invalidate(&s->list);
+    fluid_verlet_invalidate(&s->list);
 }
 
 static void phase_start(fluid_scheme *s, int phase)
@@ -104,13 +107,13 @@ fluid_scheme *fluid_scheme_create(const fsi_case *c, const char *role,
     }
     const double h_over_dx = fsi_case_get_real(c, role, "smoothing_factor", ULPH_KERNEL_H_OVER_DX);
     const double q = fsi_case_get_real(c, role, "support_factor", ULPH_KERNEL_SUPPORT_FACTOR);
-    if (ulph_kernel_init(&s->kernel, h_over_dx * p->spacing, q) != 0) {
+    if (gaussian_kernel_init(&s->kernel, h_over_dx * p->spacing, q) != 0) {
         snprintf(msg, msg_size, "[%s] smoothing_factor, support_factor: no kernel with "
                  "h = %g m and delta / h = %g", role, h_over_dx * p->spacing, q);
         free(s);
         return NULL;
     }
-    s->eos = (ulph_eos){props->density, props->sound_speed, props->tait_exponent};
+    s->eos = (tait_eos){props->density, props->sound_speed, props->tait_exponent};
     s->momentum.viscosity = props->viscosity;
     s->momentum.artificial_viscosity = fsi_case_get_real(c, role, "artificial_viscosity", 0.02);
     s->momentum.h = s->kernel.h;
@@ -130,8 +133,8 @@ fluid_scheme *fluid_scheme_create(const fsi_case *c, const char *role,
     s->step.viscosity = props->viscosity;
     s->filter_interval = fsi_case_get_int(c, role, "density_filter_interval", 20);
     s->tension = fsi_case_get_bool(c, role, "tension", 0);
-    s->skin = fsi_case_get_real(c, role, "neighbour_skin", ULPH_VERLET_SKIN) * s->kernel.support;
-    ulph_verlet_init(&s->list);
+    s->skin = fsi_case_get_real(c, role, "neighbour_skin", FLUID_VERLET_SKIN) * s->kernel.support;
+    fluid_verlet_init(&s->list);
     fsi_grid_set_periodic(&s->list.grid, &props->periodic);
     ulph_operators_init(&s->ops);
     if (reserve(s, p->n) != 0) {
@@ -146,9 +149,10 @@ void fluid_scheme_free(fluid_scheme *s)
 {
     if (!s)
         return;
-    ulph_verlet_free(&s->list);
+    fluid_verlet_free(&s->list);
     ulph_operators_free(&s->ops);
     ulph_momentum_free(&s->scratch);
+    fluid_wc_integrator_free(&s->integrator);
     free(s->velocity_for_viscosity);
     free(s->filtered);
     free(s->density_gradient);
@@ -157,12 +161,12 @@ void fluid_scheme_free(fluid_scheme *s)
 
 double fluid_scheme_pressure(const fluid_scheme *s, double density)
 {
-    return ulph_eos_pressure(&s->eos, density);
+    return tait_eos_pressure(&s->eos, density);
 }
 
 double fluid_scheme_density(const fluid_scheme *s, double pressure)
 {
-    return ulph_eos_density(&s->eos, pressure);
+    return tait_eos_density(&s->eos, pressure);
 }
 
 double fluid_scheme_smoothing_length(const fluid_scheme *s)
@@ -178,7 +182,7 @@ double fluid_scheme_support(const fluid_scheme *s)
 static void fluid_state(const fluid_scheme *s, fluid_particles *p)
 {
     const int n = p->n;
-#pragma omp parallel for schedule(dynamic, ULPH_CHUNK) if (n >= ULPH_PARALLEL_MIN_PARTICLES)
+#pragma omp parallel for schedule(dynamic, FLUID_CHUNK) if (n >= FLUID_PARALLEL_MIN_PARTICLES)
     for (int i = 0; i < n; i++)
         if (p->flags[i] & FLUID_PARTICLE_FLUID) {
             /* Without tension, p >= 0 (docs/ulph.md "Tension"): a stretched front
@@ -186,7 +190,7 @@ static void fluid_state(const fluid_scheme *s, fluid_particles *p)
              * restores and that lets it sink into a wall. */
             if (!s->tension && p->density[i] < s->eos.rho0)
                 p->density[i] = s->eos.rho0;
-            p->pressure[i] = ulph_eos_pressure(&s->eos, p->density[i]);
+            p->pressure[i] = tait_eos_pressure(&s->eos, p->density[i]);
             p->volume[i] = p->mass[i] / p->density[i];
         }
 }
@@ -207,25 +211,25 @@ static void density_filter(fluid_scheme *s, fluid_particles *p)
 {
     const int n = p->n;
     const ulph_operators *ops = &s->ops;
-    const double w0 = ulph_kernel_w2(&s->kernel, 0.0);
+    const double w0 = gaussian_kernel_w2(&s->kernel, 0.0);
     ulph_gradient_scalar(ops, p->density, s->density_gradient);
-#pragma omp parallel for schedule(dynamic, ULPH_CHUNK) if (n >= ULPH_PARALLEL_MIN_PARTICLES)
+#pragma omp parallel for schedule(dynamic, FLUID_CHUNK) if (n >= FLUID_PARALLEL_MIN_PARTICLES)
     for (int i = 0; i < n; i++) {
         s->filtered[i] = p->density[i];
         if (!(p->flags[i] & FLUID_PARTICLE_FLUID))
             continue;
         const double *grad = &s->density_gradient[i * FSI_DIM];
         double wm = w0 * p->mass[i], wv = w0 * p->volume[i];
-        for (int64_t k = ops->offset[i]; k < ops->offset[i + 1]; k++) {
-            const int j = ops->neighbour[k];
+        for (int64_t k = ops->pairs.offset[i]; k < ops->pairs.offset[i + 1]; k++) {
+            const int j = ops->pairs.neighbour[k];
             if (!(p->flags[j] & (FLUID_PARTICLE_FLUID | FLUID_PARTICLE_WALL)))
                 continue;
             double shift = 0.0, xij[FSI_DIM];
             ulph_pair_vector(ops, p->x, i, j, xij);
             for (int d = 0; d < FSI_DIM; d++)
                 shift += grad[d] * xij[d];
-            wm += ops->w[k] * (p->mass[j] - p->volume[j] * shift);
-            wv += ops->w[k] * p->volume[j];
+            wm += ops->pairs.w[k] * (p->mass[j] - p->volume[j] * shift);
+            wv += ops->pairs.w[k] * p->volume[j];
         }
         s->filtered[i] = wm / wv;
     }
@@ -244,7 +248,7 @@ int fluid_scheme_rates(fluid_scheme *s, fluid_particles *p, double *drho_dt, dou
     fluid_state(s, p);
     phase_stop(s, PHASE_STATE);
     phase_start(s, PHASE_SEARCH);
-    int rc = ulph_verlet_update(&s->list, p, s->kernel.support, s->skin) < 0 ? -1 : 0;
+    int rc = fluid_verlet_update(&s->list, p, s->kernel.support, s->skin) < 0 ? -1 : 0;
     phase_stop(s, PHASE_SEARCH);
     phase_start(s, PHASE_OPERATORS);
     rc = rc != 0 ? rc : ulph_operators_update_list(&s->ops, &s->kernel, &s->list, p);
@@ -255,14 +259,14 @@ int fluid_scheme_rates(fluid_scheme *s, fluid_particles *p, double *drho_dt, dou
         return -1;
     }
     phase_start(s, PHASE_WALLS);
-    ulph_walls_update(&s->ops, &s->eos, s->momentum.gravity, s->free_slip, p,
+    ghost_walls_update(&s->ops.pairs, &s->eos, s->momentum.gravity, s->free_slip, p,
                       s->velocity_for_viscosity);
     phase_stop(s, PHASE_WALLS);
     if (s->filter_due) {
         phase_start(s, PHASE_FILTER);
         density_filter(s, p);
         fluid_state(s, p);
-        ulph_walls_update(&s->ops, &s->eos, s->momentum.gravity,
+        ghost_walls_update(&s->ops.pairs, &s->eos, s->momentum.gravity,
                           s->free_slip, p, s->velocity_for_viscosity);
         s->filter_due = 0;
         phase_stop(s, PHASE_FILTER);
@@ -272,6 +276,12 @@ int fluid_scheme_rates(fluid_scheme *s, fluid_particles *p, double *drho_dt, dou
                         drho_dt, dv_dt);
     phase_stop(s, PHASE_MOMENTUM);
     return 0;
+}
+
+int fluid_scheme_step(fluid_scheme *s, fluid_particles *p, double t, double dt,
+                      const fluid_step_hooks *hooks, char *msg, size_t msg_size)
+{
+    return fluid_wc_step(&s->integrator, p, t, dt, hooks, msg, msg_size);
 }
 
 void fluid_scheme_after_step(fluid_scheme *s, fluid_particles *p, long count)
@@ -307,7 +317,7 @@ void fluid_scheme_boundary_loads(const fluid_scheme *s, const fluid_particles *p
 
 int fluid_scheme_write_fields(const fluid_scheme *s, fsi_h5_writer *out)
 {
-    const int n = s->ops.n;
+    const int n = s->ops.pairs.n;
     int32_t *flags = malloc((size_t)(n > 0 ? n : 1) * sizeof *flags);
     if (!flags)
         return -1;
@@ -320,5 +330,5 @@ int fluid_scheme_write_fields(const fluid_scheme *s, fsi_h5_writer *out)
 
 long long fluid_scheme_pair_count(const fluid_scheme *s)
 {
-    return (long long)s->ops.n_pairs;
+    return (long long)s->ops.pairs.n_pairs;
 }

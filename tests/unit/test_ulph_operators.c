@@ -28,7 +28,8 @@
 #include "fluid_particles.h"
 #include "neighbour_grid.h"
 #include "small_tensor.h"
-#include "ulph_kernel.h"
+#include "gaussian_kernel.h"
+#include "ulph_keys.h"
 #include "ulph_operators.h"
 
 #include "unit_check.h"
@@ -88,10 +89,10 @@ static void make_lattice(fluid_particles *p, int side, double jitter, double vol
     make_layers(p, side, side, jitter, volume_noise, extra, seed);
 }
 
-static ulph_kernel kernel_of(double dx)
+static gaussian_kernel kernel_of(double dx)
 {
-    ulph_kernel k;
-    if (ulph_kernel_init(&k, ULPH_KERNEL_H_OVER_DX * dx, ULPH_KERNEL_SUPPORT_FACTOR) != 0) {
+    gaussian_kernel k;
+    if (gaussian_kernel_init(&k, ULPH_KERNEL_H_OVER_DX * dx, ULPH_KERNEL_SUPPORT_FACTOR) != 0) {
         printf("kernel set-up failed\n");
         exit(2);
     }
@@ -99,7 +100,7 @@ static ulph_kernel kernel_of(double dx)
 }
 
 /* Neighbour grid of the current positions and the operators over it. */
-static void update(ulph_operators *ops, const ulph_kernel *k, const fluid_particles *p)
+static void update(ulph_operators *ops, const gaussian_kernel *k, const fluid_particles *p)
 {
     fsi_neighbour_grid grid;
     fsi_grid_init(&grid);
@@ -164,17 +165,17 @@ static double frobenius_condition(const double *m, const double *m_inv)
 
 /* Integral of alpha (exp(-(r/h)^2) - C) over the ball of radius q h in dim
  * dimensions, by Simpson's rule in r (the kernel is smooth on [0, q h]). */
-static double kernel_integral(int dim, double h, double q, const ulph_kernel *k)
+static double kernel_integral(int dim, double h, double q, const gaussian_kernel *k)
 {
     const int m = 4000;
     const double delta = q * h, step = delta / m, c = exp(-q * q);
-    const double alpha = ulph_kernel_normalisation(dim, h, q);
+    const double alpha = gaussian_kernel_normalisation(dim, h, q);
     const double surface = dim == 2 ? 2.0 * PI : 4.0 * PI;
     double s = 0.0;
     for (int i = 0; i <= m; i++) {
         const double r = i * step;
         /* The build's own kernel where it applies, else the formula. */
-        const double w = k ? ulph_kernel_w(k, r) : alpha * fmax(exp(-r * r / (h * h)) - c, 0.0);
+        const double w = k ? gaussian_kernel_w(k, r) : alpha * fmax(exp(-r * r / (h * h)) - c, 0.0);
         const double f = w * surface * pow(r, dim - 1);
         s += f * (i == 0 || i == m ? 1.0 : (i % 2 ? 4.0 : 2.0));
     }
@@ -184,7 +185,7 @@ static double kernel_integral(int dim, double h, double q, const ulph_kernel *k)
 static void check_kernel(void)
 {
     const double dx = 0.01, h = 1.2 * dx;
-    ulph_kernel k = kernel_of(dx);
+    gaussian_kernel k = kernel_of(dx);
     CHECK(fabs(k.support - 3.6 * dx) < 1e-15, "support %g, expected 3.6 dx", k.support);
     CHECK(k.shift == exp(-9.0), "shift C = %g, expected e^-9", k.shift);
     if (FSI_DIM == 2) {
@@ -192,14 +193,14 @@ static void check_kernel(void)
         CHECK(fabs(k.alpha - eq18) < 1e-14 * eq18, "alpha %.17g, 000 Eq. 18 gives %.17g",
               k.alpha, eq18);
     }
-    CHECK(fabs(ulph_kernel_w(&k, 0.0) - k.alpha * (1.0 - exp(-9.0))) < 1e-15 * k.alpha,
-          "w(0) = %g", ulph_kernel_w(&k, 0.0));
-    CHECK(ulph_kernel_w(&k, k.support) == 0.0, "w(delta) = %g", ulph_kernel_w(&k, k.support));
-    CHECK(ulph_kernel_w(&k, 1.5 * k.support) == 0.0, "w beyond the support");
-    double prev = ulph_kernel_w(&k, 0.0);
+    CHECK(fabs(gaussian_kernel_w(&k, 0.0) - k.alpha * (1.0 - exp(-9.0))) < 1e-15 * k.alpha,
+          "w(0) = %g", gaussian_kernel_w(&k, 0.0));
+    CHECK(gaussian_kernel_w(&k, k.support) == 0.0, "w(delta) = %g", gaussian_kernel_w(&k, k.support));
+    CHECK(gaussian_kernel_w(&k, 1.5 * k.support) == 0.0, "w beyond the support");
+    double prev = gaussian_kernel_w(&k, 0.0);
     int monotone = 1;
     for (int i = 1; i <= 1000; i++) {
-        const double w = ulph_kernel_w(&k, i * k.support / 1000.0);
+        const double w = gaussian_kernel_w(&k, i * k.support / 1000.0);
         monotone &= w <= prev && w >= 0.0;
         prev = w;
     }
@@ -210,31 +211,31 @@ static void check_kernel(void)
     double worst = 0.0;
     for (int i = 0; i <= 400000; i++) {
         const double t = i * 1e-4, e = exp(-t);
-        worst = fmax(worst, fabs(ulph_exp_neg(t) - e) / e);
+        worst = fmax(worst, fabs(fast_exp_neg(t) - e) / e);
     }
     printf("kernel: inline exp(-t) within %.3g of libm's on [0, 40]\n", worst);
     CHECK(worst < 1e-15, "inline exp(-t) off by %g relative", worst);
-    CHECK(ulph_exp_neg(0.0) == 1.0 && ulph_exp_neg(800.0) == 0.0 && isnan(ulph_exp_neg(NAN)),
+    CHECK(fast_exp_neg(0.0) == 1.0 && fast_exp_neg(800.0) == 0.0 && isnan(fast_exp_neg(NAN)),
           "inline exp(-t) at 0, 800, NaN");
 
     /* Unit integral in 2D and 3D, for the seed's q = 3 and another support. */
     for (int dim = 2; dim <= 3; dim++)
         for (int iq = 0; iq < 2; iq++) {
             const double q = iq ? 2.0 : 3.0;
-            ulph_kernel kq;
-            CHECK(ulph_kernel_init(&kq, h, q) == 0, "kernel with q = %g", q);
+            gaussian_kernel kq;
+            CHECK(gaussian_kernel_init(&kq, h, q) == 0, "kernel with q = %g", q);
             const double s = kernel_integral(dim, h, q, dim == FSI_DIM ? &kq : NULL);
             CHECK(fabs(s - 1.0) < 1e-10, "dim %d, q = %g: integral of w = %.15g", dim, q, s);
         }
-    ulph_kernel bad;
-    CHECK(ulph_kernel_init(&bad, 0.0, 3.0) == -1, "h = 0 accepted");
-    CHECK(ulph_kernel_init(&bad, NAN, 3.0) == -1, "h = NaN accepted");
-    CHECK(ulph_kernel_init(&bad, h, -1.0) == -1, "negative support factor accepted");
-    CHECK(ulph_kernel_w(&bad, 0.0) == 0.0, "a refused kernel is not zero");
+    gaussian_kernel bad;
+    CHECK(gaussian_kernel_init(&bad, 0.0, 3.0) == -1, "h = 0 accepted");
+    CHECK(gaussian_kernel_init(&bad, NAN, 3.0) == -1, "h = NaN accepted");
+    CHECK(gaussian_kernel_init(&bad, h, -1.0) == -1, "negative support factor accepted");
+    CHECK(gaussian_kernel_w(&bad, 0.0) == 0.0, "a refused kernel is not zero");
 }
 
 /* The neighbour rows and M against a sum over all pairs. */
-static void check_against_brute_force(const ulph_operators *ops, const ulph_kernel *k,
+static void check_against_brute_force(const ulph_operators *ops, const gaussian_kernel *k,
                                       const fluid_particles *p)
 {
     int bad_count = 0;
@@ -255,7 +256,7 @@ static void check_against_brute_force(const ulph_operators *ops, const ulph_kern
             const double w = k->alpha * (exp(-r2 / (k->h * k->h)) - exp(-9.0));
             fsi_mat_add_outer(m, w * p->volume[j], rel, rel);
         }
-        bad_count += count != ops->offset[i + 1] - ops->offset[i];
+        bad_count += count != ops->pairs.offset[i + 1] - ops->pairs.offset[i];
         const double *mi = ops->shape + (int64_t)i * FSI_MAT_SIZE;
         for (int c = 0; c < FSI_MAT_SIZE; c++)
             worst = fmax(worst, fabs(mi[c] - m[c]) / fsi_mat_norm(m));
@@ -277,7 +278,7 @@ static void check_linear(void)
     const int side = FSI_DIM == 2 ? 30 : 10;
     fluid_particles p;
     make_lattice(&p, side, JITTER, VOLUME_NOISE, 0, 1);
-    const ulph_kernel k = kernel_of(p.spacing);
+    const gaussian_kernel k = kernel_of(p.spacing);
     ulph_operators ops;
     ulph_operators_init(&ops);
     update(&ops, &k, &p);
@@ -351,7 +352,7 @@ static field_error quadratic_error(int side, double jitter)
 {
     fluid_particles p;
     make_lattice(&p, side, jitter, 0.0, 0, 11);
-    const ulph_kernel k = kernel_of(p.spacing);
+    const gaussian_kernel k = kernel_of(p.spacing);
     ulph_operators ops;
     ulph_operators_init(&ops);
     update(&ops, &k, &p);
@@ -485,7 +486,7 @@ static void check_singular(void)
         }
     x[(NEAR_LINE + 2) * FSI_DIM] += 0.01 * dx;             /* 1 % of dx off the line */
 
-    const ulph_kernel k = kernel_of(dx);
+    const gaussian_kernel k = kernel_of(dx);
     ulph_operators ops;
     ulph_operators_init(&ops);
     update(&ops, &k, &p);
@@ -500,9 +501,9 @@ static void check_singular(void)
     apply(&ops, &fld);
 
     int finite = 1, lattice_flagged = 0;
-    for (int64_t q = 0; q < ops.n_pairs; q++)
+    for (int64_t q = 0; q < ops.pairs.n_pairs; q++)
         for (int d = 0; d < FSI_DIM; d++)
-            finite &= isfinite(ops.g[q * FSI_DIM + d]) && isfinite(ops.w[q]);
+            finite &= isfinite(ops.g[q * FSI_DIM + d]) && isfinite(ops.pairs.w[q]);
     for (int i = 0; i < first; i++)
         lattice_flagged += ops.flags[i] != 0;
     CHECK(lattice_flagged == 0, "%d lattice particles flagged", lattice_flagged);
@@ -524,7 +525,7 @@ static void check_singular(void)
           near_cond);
     for (int e = 0; e < EXTRA; e++) {
         const int i = first + e;
-        const int64_t row = ops.offset[i + 1] - ops.offset[i];
+        const int64_t row = ops.pairs.offset[i + 1] - ops.pairs.offset[i];
         const int64_t expect = e < PAIR ? 0 : e < TRIANGLE ? 1 : e < LINE ? 2 : 4;
         CHECK(row == expect, "extra particle %d has %ld neighbours, expected %ld", e, (long)row,
               (long)expect);
@@ -567,7 +568,7 @@ static void run(run_result *r, const fluid_particles *p, int threads, int reuse)
 {
     omp_set_num_threads(threads);
     CHECK(omp_get_max_threads() == threads, "cannot set %d threads", threads);
-    const ulph_kernel k = kernel_of(p->spacing);
+    const gaussian_kernel k = kernel_of(p->spacing);
     if (!reuse)
         ulph_operators_init(&r->ops);
     update(&r->ops, &k, p);
@@ -590,16 +591,16 @@ static void run_free(run_result *r)
 /* Bytes that differ between two runs, over lists, M, M^-1, flags and outputs. */
 static long differing_bytes(const run_result *a, const run_result *b)
 {
-    if (a->ops.n != b->ops.n || a->ops.n_pairs != b->ops.n_pairs)
+    if (a->ops.pairs.n != b->ops.pairs.n || a->ops.pairs.n_pairs != b->ops.pairs.n_pairs)
         return -1;
-    const size_t n = (size_t)a->ops.n, np = (size_t)a->ops.n_pairs;
+    const size_t n = (size_t)a->ops.pairs.n, np = (size_t)a->ops.pairs.n_pairs;
     const struct {
         const void *x, *y;
         size_t size;
     } parts[] = {
-        {a->ops.offset, b->ops.offset, (n + 1) * sizeof(int64_t)},
-        {a->ops.neighbour, b->ops.neighbour, np * sizeof(int32_t)},
-        {a->ops.w, b->ops.w, np * sizeof(double)},
+        {a->ops.pairs.offset, b->ops.pairs.offset, (n + 1) * sizeof(int64_t)},
+        {a->ops.pairs.neighbour, b->ops.pairs.neighbour, np * sizeof(int32_t)},
+        {a->ops.pairs.w, b->ops.pairs.w, np * sizeof(double)},
         {a->ops.g, b->ops.g, np * FSI_DIM * sizeof(double)},
         {a->ops.shape, b->ops.shape, n * FSI_MAT_SIZE * sizeof(double)},
         {a->ops.shape_inv, b->ops.shape_inv, n * FSI_MAT_SIZE * sizeof(double)},
@@ -628,7 +629,7 @@ static void check_layers(void)
         for (int jittered = 0; jittered <= 1; jittered++) {
             fluid_particles p;
             make_layers(&p, side, rows, jittered ? JITTER : 0.0, 0.0, 0, 9);
-            const ulph_kernel k = kernel_of(p.spacing);
+            const gaussian_kernel k = kernel_of(p.spacing);
             ulph_operators ops;
             ulph_operators_init(&ops);
             update(&ops, &k, &p);
@@ -663,7 +664,7 @@ static void check_threads(void)
     fluid_particles p, small;
     make_lattice(&p, side, JITTER, VOLUME_NOISE, 0, 21);
     make_lattice(&small, side / 3, JITTER, VOLUME_NOISE, 0, 22);
-    CHECK(p.n >= 4 * ULPH_PARALLEL_MIN_PARTICLES, "%d particles: the loops would not fork", p.n);
+    CHECK(p.n >= 4 * FLUID_PARALLEL_MIN_PARTICLES, "%d particles: the loops would not fork", p.n);
     run_result one, two, grown;
     run(&one, &p, 1, 0);
     run(&two, &p, 2, 0);
@@ -672,7 +673,7 @@ static void check_threads(void)
     run(&grown, &p, 2, 1); /* the same operators, now grown */
     const long d12 = differing_bytes(&one, &two), dgrown = differing_bytes(&one, &grown);
     printf("threads: %d particles, %ld pairs; 1 vs 2 threads: %ld bytes differ; reused vs "
-           "fresh operators: %ld bytes differ\n", p.n, (long)one.ops.n_pairs, d12, dgrown);
+           "fresh operators: %ld bytes differ\n", p.n, (long)one.ops.pairs.n_pairs, d12, dgrown);
     CHECK(d12 == 0, "1 and 2 threads differ in %ld bytes", d12);
     CHECK(dgrown == 0, "reused operators differ from fresh ones in %ld bytes", dgrown);
     run_free(&one);
@@ -689,7 +690,7 @@ static void check_input(void)
 {
     fluid_particles p;
     make_lattice(&p, 4, 0.0, 0.0, 0, 1);
-    const ulph_kernel k = kernel_of(p.spacing);
+    const gaussian_kernel k = kernel_of(p.spacing);
     fsi_neighbour_grid grid;
     fsi_grid_init(&grid);
     CHECK(fsi_grid_build(&grid, p.x, p.n - 1, k.support) == 0, "grid build failed");
@@ -697,10 +698,10 @@ static void check_input(void)
     ulph_operators_init(&ops);
     CHECK(ulph_operators_update(&ops, &k, &grid, &p) == -1, "a grid of %d points accepted for %d",
           p.n - 1, p.n);
-    CHECK(ops.n == 0 && ops.offset == NULL, "refused update left state behind");
+    CHECK(ops.pairs.n == 0 && ops.pairs.offset == NULL, "refused update left state behind");
     CHECK(fsi_grid_build(&grid, p.x, 0, k.support) == 0, "empty grid build failed");
     p.n = 0;
-    CHECK(ulph_operators_update(&ops, &k, &grid, &p) == 0 && ops.n == 0 && ops.n_pairs == 0,
+    CHECK(ulph_operators_update(&ops, &k, &grid, &p) == 0 && ops.pairs.n == 0 && ops.pairs.n_pairs == 0,
           "no particles refused");
     fsi_grid_free(&grid);
     ulph_operators_free(&ops);

@@ -1,4 +1,4 @@
-/* The rates of the ULPH fluid (fluid_solver/ulph: ulph_eos.h, ulph_walls, ulph_momentum):
+/* The rates of the ULPH fluid (fluid_solver/ulph: tait_eos.h, ulph_walls, ulph_momentum):
  *  - the Tait equation of state (000 Eq. 6) and its inverse (Eq. 53) agree;
  *  - wall particles of a tank accelerating at a get rho0 (g - a) . (x_S - x_surface),
  *    the continued field of the fluid at rest in the tank (000 Eq. 52 with a_S = a);
@@ -26,12 +26,13 @@
 #include "fluid_particles.h"
 #include "neighbour_grid.h"
 #include "small_tensor.h"
-#include "ulph_eos.h"
-#include "ulph_kernel.h"
-#include "ulph_contact.h"
+#include "tait_eos.h"
+#include "gaussian_kernel.h"
+#include "ulph_keys.h"
+#include "soft_contact.h"
 #include "ulph_momentum.h"
 #include "ulph_operators.h"
-#include "ulph_walls.h"
+#include "ghost_walls.h"
 
 #include "unit_check.h"
 
@@ -48,7 +49,7 @@ static double uniform(void)
 
 typedef struct {
     fluid_particles p;
-    ulph_kernel k;
+    gaussian_kernel k;
     fsi_neighbour_grid grid;
     ulph_operators ops;
     ulph_momentum_scratch scratch;
@@ -64,7 +65,7 @@ static void scene_update(scene *s)
 static void scene_alloc(scene *s, int n, double dx)
 {
     fluid_particles_alloc(&s->p, n, dx);
-    ulph_kernel_init(&s->k, ULPH_KERNEL_H_OVER_DX * dx, ULPH_KERNEL_SUPPORT_FACTOR);
+    gaussian_kernel_init(&s->k, ULPH_KERNEL_H_OVER_DX * dx, ULPH_KERNEL_SUPPORT_FACTOR);
     fsi_grid_init(&s->grid);
     ulph_operators_init(&s->ops);
     memset(&s->scratch, 0, sizeof s->scratch);
@@ -87,15 +88,15 @@ static void scene_free(scene *s)
 
 static void test_eos(void)
 {
-    const ulph_eos e = {1000.0, 31.3, 7.0};
+    const tait_eos e = {1000.0, 31.3, 7.0};
     const double pressures[] = {-1e5, -1000.0, 0.0, 4905.0, 1e5, 1e7};
     for (size_t i = 0; i < sizeof pressures / sizeof pressures[0]; i++) {
-        double rho = ulph_eos_density(&e, pressures[i]);
-        CHECK(fabs(ulph_eos_pressure(&e, rho) - pressures[i]) <
+        double rho = tait_eos_density(&e, pressures[i]);
+        CHECK(fabs(tait_eos_pressure(&e, rho) - pressures[i]) <
                   1e-9 * fmax(1.0, fabs(pressures[i])),
-              "EOS round trip at p = %g: %g", pressures[i], ulph_eos_pressure(&e, rho));
+              "EOS round trip at p = %g: %g", pressures[i], tait_eos_pressure(&e, rho));
     }
-    CHECK(ulph_eos_pressure(&e, 1000.0) == 0.0, "p(rho0) = 0");
+    CHECK(tait_eos_pressure(&e, 1000.0) == 0.0, "p(rho0) = 0");
 }
 
 #if FSI_DIM == 2
@@ -124,9 +125,9 @@ static void test_hydrostatic(void)
             p->pressure[n] = fluid ? rho0 * g * (H - y) : 0.0;
         }
     scene_update(&s);
-    const ulph_eos e = {rho0, 31.3, 7.0};
+    const tait_eos e = {rho0, 31.3, 7.0};
     const double gravity[2] = {0.0, -g};
-    ulph_walls_update(&s.ops, &e, gravity, NULL, p, s.vv);
+    ghost_walls_update(&s.ops.pairs, &e, gravity, NULL, p, s.vv);
     double worst_wall = 0.0;
     for (int i = 0; i < p->n; i++)
         if ((p->flags[i] & FLUID_PARTICLE_WALL) && p->pressure[i] != 0.0)
@@ -176,7 +177,7 @@ static void test_hydrostatic(void)
     for (int slip = 0; slip < 2; slip++) {
         for (int i = 0; i < p->n; i++)
             free_slip[i] = (unsigned char)slip;
-        ulph_walls_update(&s.ops, &e, gravity, free_slip, p, s.vv);
+        ghost_walls_update(&s.ops.pairs, &e, gravity, free_slip, p, s.vv);
         double worst_v = 0.0;
         int walls_seen = 0;
         for (int i = 0; i < p->n; i++) {
@@ -221,7 +222,7 @@ static void test_hydrostatic(void)
             p->pressure[i] = rho0 * ((gravity[0] - a[0]) * (p->x[i * 2] - x_r[0]) +
                                      (gravity[1] - a[1]) * (p->x[i * 2 + 1] - x_r[1]));
     }
-    ulph_walls_update(&s.ops, &e, gravity, NULL, p, s.vv);
+    ghost_walls_update(&s.ops.pairs, &e, gravity, NULL, p, s.vv);
     double worst_acc = 0.0;
     int loaded = 0;
     for (int i = 0; i < p->n; i++) {
@@ -363,7 +364,7 @@ static void test_continuity(void)
     scene_free(&s);
 }
 
-/* The wall contact of 004 Eqs. 21-24 (ulph_contact.h): the printed value at half a
+/* The wall contact of 004 Eqs. 21-24 (soft_contact.h): the printed value at half a
  * spacing (h = 1.2 dx: eta = 0.56, f = 2/3, zeta = 1/2) and the same magnitude closer
  * in (held), nothing at and beyond a spacing, repulsive inside it, and continuous
  * where f changes branch (eta = 2/3, 1, 2, the last reached with h = 0.5 dx): a jump
@@ -373,7 +374,7 @@ static void test_contact(void)
 {
     const double dx = 0.004, c0 = 30.0, k_c2 = 0.01 * c0 * c0;
     const double h = 1.2 * dx, inv = 1.0 / (0.75 * h);
-    const double at_half = ulph_contact_factor(0.5 * dx, dx, k_c2, inv);
+    const double at_half = soft_contact_factor(0.5 * dx, dx, k_c2, inv);
     const double expected = k_c2 * 0.5 * (2.0 / 3.0) / (0.25 * dx * dx);
     printf("contact: k c0^2 zeta f / r^2 at dx / 2 = %.6g (expected %.6g)\n", at_half, expected);
     CHECK(fabs(at_half - expected) < 1e-12 * expected, "contact at dx / 2: %g, not %g", at_half,
@@ -381,14 +382,14 @@ static void test_contact(void)
     /* Held below dx / 2: the same magnitude (factor times r) at dx / 4 and dx / 100. */
     for (int m = 0; m < 2; m++) {
         const double r = m == 0 ? 0.25 * dx : 0.01 * dx;
-        const double held = ulph_contact_factor(r, dx, k_c2, inv) * r;
+        const double held = soft_contact_factor(r, dx, k_c2, inv) * r;
         CHECK(fabs(held - at_half * 0.5 * dx) < 1e-12 * at_half * dx,
               "contact at r = %g not held at its value at dx / 2: %g, not %g", r, held,
               at_half * 0.5 * dx);
     }
-    CHECK(ulph_contact_factor(dx, dx, k_c2, inv) == 0.0 &&
-              ulph_contact_factor(1.5 * dx, dx, k_c2, inv) == 0.0 &&
-              ulph_contact_factor(0.0, dx, k_c2, inv) == 0.0,
+    CHECK(soft_contact_factor(dx, dx, k_c2, inv) == 0.0 &&
+              soft_contact_factor(1.5 * dx, dx, k_c2, inv) == 0.0 &&
+              soft_contact_factor(0.0, dx, k_c2, inv) == 0.0,
           "contact not zero at r = dx, 1.5 dx or 0");
     double worst_jump = 0.0;
     const double hs[2] = {1.2 * dx, 0.5 * dx}, etas[3] = {2.0 / 3.0, 1.0, 2.0};
@@ -398,8 +399,8 @@ static void test_contact(void)
             if (r >= dx)
                 continue;
             /* F(r) = factor * r, the force per unit mass. */
-            const double lo = ulph_contact_factor(r - e, dx, k_c2, i_s) * (r - e);
-            const double hi = ulph_contact_factor(r + e, dx, k_c2, i_s) * (r + e);
+            const double lo = soft_contact_factor(r - e, dx, k_c2, i_s) * (r - e);
+            const double hi = soft_contact_factor(r + e, dx, k_c2, i_s) * (r + e);
             const double slope = k_c2 * 4.0 / (dx * dx * dx) + k_c2 * 4.0 * i_s / (dx * r);
             worst_jump = fmax(worst_jump, fabs(hi - lo) / (2.0 * e * slope));
             CHECK(lo > 0.0 && hi >= 0.0, "contact not repulsive at r = %g", r);
@@ -430,8 +431,8 @@ static void test_artificial_viscosity(void)
     double worst = 0.0, scale = 0.0, power = 0.0;
     for (int i = 0; i < p->n; i++) {
         double expect[FSI_DIM] = {0};
-        for (int64_t k = s.ops.offset[i]; k < s.ops.offset[i + 1]; k++) {
-            const int j = s.ops.neighbour[k];
+        for (int64_t k = s.ops.pairs.offset[i]; k < s.ops.pairs.offset[i + 1]; k++) {
+            const int j = s.ops.pairs.neighbour[k];
             double xij[FSI_DIM], vx = 0.0, r2 = 0.0;
             ulph_pair_vector(&s.ops, p->x, i, j, xij);
             for (int d = 0; d < FSI_DIM; d++) {

@@ -1,4 +1,4 @@
-/* Candidate lists with a skin (fluid_solver/ulph/ulph_verlet.h) give the operators the
+/* Candidate lists with a skin (fluid_solver/ulph/verlet_list.h) give the operators the
  * same neighbours as a fresh grid search:
  *  - after every particle moved less than half the skin, the lists are kept, and each
  *    row of ulph_operators_update_list holds exactly the neighbours within the support
@@ -17,9 +17,10 @@
 
 #include "fluid_particles.h"
 #include "neighbour_grid.h"
-#include "ulph_kernel.h"
+#include "gaussian_kernel.h"
+#include "ulph_keys.h"
 #include "ulph_operators.h"
-#include "ulph_verlet.h"
+#include "verlet_list.h"
 
 #include "unit_check.h"
 
@@ -61,8 +62,8 @@ static int compare_int(const void *a, const void *b)
 /* Row i of ops sorted into out; its length. */
 static int64_t sorted_row(const ulph_operators *ops, int i, int32_t *out)
 {
-    const int64_t len = ops->offset[i + 1] - ops->offset[i];
-    memcpy(out, ops->neighbour + ops->offset[i], (size_t)len * sizeof *out);
+    const int64_t len = ops->pairs.offset[i + 1] - ops->pairs.offset[i];
+    memcpy(out, ops->pairs.neighbour + ops->pairs.offset[i], (size_t)len * sizeof *out);
     qsort(out, (size_t)len, sizeof *out, compare_int);
     return len;
 }
@@ -71,19 +72,19 @@ static void test_same_neighbours(void)
 {
     fluid_particles p;
     make_scene(&p);
-    ulph_kernel k;
-    ulph_kernel_init(&k, ULPH_KERNEL_H_OVER_DX * p.spacing, ULPH_KERNEL_SUPPORT_FACTOR);
+    gaussian_kernel k;
+    gaussian_kernel_init(&k, ULPH_KERNEL_H_OVER_DX * p.spacing, ULPH_KERNEL_SUPPORT_FACTOR);
     const double skin = 0.1 * k.support;
-    ulph_verlet v;
-    ulph_verlet_init(&v);
-    CHECK(ulph_verlet_update(&v, &p, k.support, skin) == 1, "first update does not build");
-    CHECK(ulph_verlet_update(&v, &p, k.support, skin) == 0, "unmoved particles rebuild");
+    fluid_verlet v;
+    fluid_verlet_init(&v);
+    CHECK(fluid_verlet_update(&v, &p, k.support, skin) == 1, "first update does not build");
+    CHECK(fluid_verlet_update(&v, &p, k.support, skin) == 0, "unmoved particles rebuild");
 
     /* Every particle (walls too: moving walls) by up to 0.3 skin per axis < skin / 2. */
     unsigned long state = 11;
     for (int c = 0; c < p.n * FSI_DIM; c++)
         p.x[c] += 0.3 * skin * jitter(&state);
-    CHECK(ulph_verlet_update(&v, &p, k.support, skin) == 0, "moved < skin / 2: rebuilt");
+    CHECK(fluid_verlet_update(&v, &p, k.support, skin) == 0, "moved < skin / 2: rebuilt");
 
     ulph_operators from_list, fresh;
     ulph_operators_init(&from_list);
@@ -113,7 +114,7 @@ static void test_same_neighbours(void)
             bad_m += fabs(ma[c] - mb[c]) > 1e-12 * fsi_mat_norm(mb);
     }
     printf("verlet: %d particles, %d idle walls, %lld pairs from the lists, %lld fresh\n",
-           p.n, idle, (long long)from_list.n_pairs, (long long)fresh.n_pairs);
+           p.n, idle, (long long)from_list.pairs.n_pairs, (long long)fresh.pairs.n_pairs);
     CHECK(idle > 100, "only %d idle walls", idle);
     CHECK(bad_idle == 0, "%d idle particles are not walls away from the water", bad_idle);
     CHECK(bad_rows == 0, "%d rows differ from a fresh search", bad_rows);
@@ -123,21 +124,21 @@ static void test_same_neighbours(void)
 
     /* Half the skin, another count, a non-finite position. */
     p.x[0] += skin; /* at least 0.7 skin from where it was built */
-    CHECK(ulph_verlet_update(&v, &p, k.support, skin) == 1, "moved > skin / 2: kept");
+    CHECK(fluid_verlet_update(&v, &p, k.support, skin) == 1, "moved > skin / 2: kept");
     p.n--;
-    CHECK(ulph_verlet_update(&v, &p, k.support, skin) == 1, "another count: kept");
+    CHECK(fluid_verlet_update(&v, &p, k.support, skin) == 1, "another count: kept");
     p.n++;
     p.x[3] = NAN;
-    CHECK(ulph_verlet_update(&v, &p, k.support, skin) == -1, "a NaN position accepted");
+    CHECK(fluid_verlet_update(&v, &p, k.support, skin) == -1, "a NaN position accepted");
     p.x[3] = 0.5;
 
     /* 1 and 2 threads. */
-    ulph_verlet two;
-    ulph_verlet_init(&two);
+    fluid_verlet two;
+    fluid_verlet_init(&two);
     omp_set_num_threads(1);
-    ulph_verlet_update(&v, &p, k.support, 2.0 * skin);
+    fluid_verlet_update(&v, &p, k.support, 2.0 * skin);
     omp_set_num_threads(2);
-    ulph_verlet_update(&two, &p, k.support, 2.0 * skin);
+    fluid_verlet_update(&two, &p, k.support, 2.0 * skin);
     CHECK(v.n == two.n && v.offset[v.n] == two.offset[two.n] &&
               memcmp(v.offset, two.offset, (size_t)(v.n + 1) * sizeof *v.offset) == 0 &&
               memcmp(v.candidate, two.candidate, (size_t)v.offset[v.n] * sizeof *v.candidate) == 0 &&
@@ -147,8 +148,8 @@ static void test_same_neighbours(void)
     free(a);
     free(b);
     fsi_grid_free(&grid);
-    ulph_verlet_free(&v);
-    ulph_verlet_free(&two);
+    fluid_verlet_free(&v);
+    fluid_verlet_free(&two);
     ulph_operators_free(&from_list);
     ulph_operators_free(&fresh);
     fluid_particles_free(&p);

@@ -1,23 +1,24 @@
-/* Ghost wall particles (000 §2.3) and moving boundary particles (the solid seen by the
+/* Ghost wall particles (000 §2.3; the dummy particles of Adami et al. 2012, whose
+ * Eq. 27 is the pressure below) and moving boundary particles (the solid seen by the
  * fluid, 000 §3, treated the same way as no-slip walls): their pressure, density, mass
  * and the velocity they show the viscous stress, interpolated from the fluid particles
  * in their support at every evaluation of the rates. */
-#ifndef ULPH_WALLS_H
-#define ULPH_WALLS_H
+#ifndef FSI_GHOST_WALLS_H
+#define FSI_GHOST_WALLS_H
 
 #include "fluid_particles.h"
-#include "ulph_eos.h"
-#include "ulph_operators.h"
+#include "tait_eos.h"
+#include "fluid_pairs.h"
 
-/* For every wall or moving boundary particle S with fluid neighbours f (weights w_Sf of
- * the last ulph_operators_update):
+/* For every wall or moving boundary particle S with fluid neighbours f (kernel weights
+ * w_Sf of the pairs of the current evaluation):
  *   p_S = max(0, (sum_f p_f w_Sf + (g - a_S) . sum_f rho_f (x_S - x_f) w_Sf) / sum_f w_Sf)
  *                                                          (000 Eq. 52)
  * with a_S = p->boundary_acceleration of S: a moving wall's prescribed acceleration
  * (fluid_wall_motion.h), a solid particle's received one (fluid_boundary.h). In the
  * wall's frame the fluid feels g - a_S, so this continues the hydrostatic field of an
  * accelerating tank exactly (tests/unit/test_ulph_scheme.c).
- *   rho_S from the equation of state (000 Eq. 53, ulph_eos.h), m_S = rho_S V0 (Eq. 54)
+ *   rho_S from the equation of state (000 Eq. 53, tait_eos.h), m_S = rho_S V0 (Eq. 54)
  *   v~_S = sum_f v_f w_Sf / sum_f w_Sf                     (000 Eq. 51)
  *   velocity_for_viscosity_S = 2 v_S - v~_S                (no-slip, 000 Eq. 50)
  *                            = v~_S - 2 ((v~_S - v_S) . n_S) n_S   (free-slip walls,
@@ -31,7 +32,7 @@
  * sank through the floor). A wall particle without fluid neighbours gets p = 0,
  * rho = rho0 and v~ = 0. For fluid particles velocity_for_viscosity is their
  * velocity. */
-void ulph_walls_update(const ulph_operators *ops, const ulph_eos *eos, const double *gravity,
+void ghost_walls_update(const fluid_pairs *pairs, const tait_eos *eos, const double *gravity,
                        const unsigned char *free_slip, fluid_particles *p,
                        double *velocity_for_viscosity);
 

@@ -1,4 +1,4 @@
-/* exp(-t), t >= 0, inline for the kernel of 000 Eq. 17 (ulph_kernel.h).
+/* exp(-t), t >= 0, inline for the kernel of 000 Eq. 17 (gaussian_kernel.h).
  *
  * Why not libm's exp: it was a sixth of a step (a call per pair, with its error
  * handling); inline, the kernel values of a row are one loop without calls. The method
@@ -12,14 +12,14 @@
  * series to u^5 (the next term is below 4e-17), 2^k built in the exponent bits. Within
  * a few units in the last place of libm's exp (unit test: 2.3e-16 relative over
  * [0, 40]). */
-#ifndef ULPH_EXP_H
-#define ULPH_EXP_H
+#ifndef FSI_FAST_EXP_H
+#define FSI_FAST_EXP_H
 
 #include <stdint.h>
 #include <string.h>
 
 /* 2^(j/64), j = 0 .. 63, correctly rounded. */
-static const double ulph_exp2_table[64] = {
+static const double fast_exp2_table[64] = {
     0x1.0000000000000p+0, 0x1.02c9a3e778061p+0, 0x1.059b0d3158574p+0,
     0x1.0874518759bc8p+0, 0x1.0b5586cf9890fp+0, 0x1.0e3ec32d3d1a2p+0,
     0x1.11301d0125b51p+0, 0x1.1429aaea92de0p+0, 0x1.172b83c7d517bp+0,
@@ -45,7 +45,7 @@ static const double ulph_exp2_table[64] = {
 };
 
 /* exp(-t) for 0 <= t <= 700, without a check (a loop of them can be vectorised). */
-static inline double ulph_exp_neg_unchecked(double t)
+static inline double fast_exp_neg_unchecked(double t)
 {
     const double inv_step = 92.33248261689366;       /* 64 / ln 2 */
     const double step_hi = 0.01083042469326756;      /* ln 2 / 64, 32 bits */
@@ -63,15 +63,15 @@ static inline double ulph_exp_neg_unchecked(double t)
     const int64_t scale_bits = (k / 64 + 1023) << 52;
     double scale;
     memcpy(&scale, &scale_bits, sizeof scale);
-    return scale * (ulph_exp2_table[j] * p);
+    return scale * (fast_exp2_table[j] * p);
 }
 
 /* exp(-t) for any t >= 0: 0 beyond 700 (far beyond any support), NaN for NaN. */
-static inline double ulph_exp_neg(double t)
+static inline double fast_exp_neg(double t)
 {
     if (!(t <= 700.0))
         return t > 700.0 ? 0.0 : t;
-    return ulph_exp_neg_unchecked(t);
+    return fast_exp_neg_unchecked(t);
 }
 
 #endif

@@ -1,29 +1,29 @@
-/* Candidate neighbour lists with a skin (Verlet lists) for the ULPH operators.
+/* Candidate neighbour lists with a skin (Verlet lists), shared by the fluid schemes.
  *
- * ulph_operators needs, at every evaluation of the rates (two per step, 000 Eq. 56),
- * every pair closer than the support delta. Searching the cell grid for them each time
+ * A scheme needs, at every evaluation of the rates (two per step of the
+ * predictor-corrector), every pair closer than the support delta. Searching the cell grid for them each time
  * visits 3^DIM cells, about 2.9 times the support's area in 2D, and the search was
  * half of a step's cost. A Verlet list keeps, per particle, the candidates within
  * delta + skin at its last build; while no particle has moved more than skin / 2
  * since, every pair now within delta is among them (|x_IJ| now <= |x_IJ| then +
- * |d_I| + |d_J|), so the operators filter the candidates instead of searching the
+ * |d_I| + |d_J|), so the scheme filters the candidates instead of searching the
  * grid and the exact same neighbours within the support are found. The list is
  * rebuilt when a particle has moved half the skin (or the particle count changed):
  * about every skin / (2 v dt) steps.
  *
  * Idle walls. A wall particle with no fluid particle among its candidates has no fluid
  * particle within delta until the next build; nothing reads its own family then (a
- * fluid particle reads a wall through its own row and the wall's M^-1, but only walls
- * within its support, which have the fluid particle in theirs; 000 Eq. 52 of an idle
- * wall sums over no fluid). With prune_idle_walls its row is left empty and it is
- * marked idle (ulph_operators then skips its M). In F1 most of the long floor is idle
+ * fluid particle reads a wall through its own row, and in ULPH the wall's M^-1, but
+ * only walls within its support, which have the fluid particle in theirs; 000 Eq. 52
+ * of an idle wall sums over no fluid). With prune_idle_walls its row is left empty and it is
+ * marked idle (ULPH then skips its M). In F1 most of the long floor is idle
  * for most of the run.
  *
  * Rows are in the grid's query order (by cell, then by index) at the build, built in
  * parallel with each particle writing only its own row: the same on any number of
  * threads. */
-#ifndef ULPH_VERLET_H
-#define ULPH_VERLET_H
+#ifndef FSI_VERLET_LIST_H
+#define FSI_VERLET_LIST_H
 
 #include <stdint.h>
 
@@ -35,7 +35,7 @@
  * lasts 0.18 dx of travel of the fastest particle: about 20 steps of F1 at
  * cfl_acoustic = 0.1 and 2 m/s, against a build that costs about three evaluations'
  * filtering. */
-#define ULPH_VERLET_SKIN 0.1
+#define FLUID_VERLET_SKIN 0.1
 
 typedef struct {
     int n;                      /* particles of the last build */
@@ -50,26 +50,26 @@ typedef struct {
     fsi_periodic periodic;      /* the periodic axes of the grid of the last build */
     int point_capacity;         /* allocated sizes */
     int64_t pair_capacity;
-} ulph_verlet;
+} fluid_verlet;
 
 /* Empty lists (no allocation). */
-void ulph_verlet_init(ulph_verlet *v);
-void ulph_verlet_free(ulph_verlet *v);
+void fluid_verlet_init(fluid_verlet *v);
+void fluid_verlet_free(fluid_verlet *v);
 
 /* Candidates within radius of every particle of p from grid (built from p->x, any
  * cell size), idle walls pruned when asked. Returns 0, or -1 when the grid does not
  * hold p->n points or memory runs out. */
-int ulph_verlet_build(ulph_verlet *v, const fsi_neighbour_grid *grid, const fluid_particles *p,
+int fluid_verlet_build(fluid_verlet *v, const fsi_neighbour_grid *grid, const fluid_particles *p,
                       double radius, int prune_idle_walls);
 
-/* Forgets the lists: the next ulph_verlet_update rebuilds them (the particles were
+/* Forgets the lists: the next fluid_verlet_update rebuilds them (the particles were
  * permuted). */
-void ulph_verlet_invalidate(ulph_verlet *v);
+void fluid_verlet_invalidate(fluid_verlet *v);
 
 /* Keeps the lists when every particle is within skin / 2 of its position at the last
  * build with the same support and count, else rebuilds them (grid included) with
  * radius support + skin, idle walls pruned. Returns 1 when rebuilt, 0 when kept, -1
  * when a position is not finite or memory runs out. */
-int ulph_verlet_update(ulph_verlet *v, const fluid_particles *p, double support, double skin);
+int fluid_verlet_update(fluid_verlet *v, const fluid_particles *p, double support, double skin);
 
 #endif

@@ -1,30 +1,30 @@
-/* Candidate neighbour lists with a skin: see ulph_verlet.h. */
-#include "ulph_verlet.h"
+/* Candidate neighbour lists with a skin: see verlet_list.h. */
+#include "verlet_list.h"
 
 #include <math.h>
 #include <stdlib.h>
 
 #include "grow.h"
-#include "ulph_operators.h"
+#include "fluid_parallel.h"
 
-void ulph_verlet_init(ulph_verlet *v)
+void fluid_verlet_init(fluid_verlet *v)
 {
-    *v = (ulph_verlet){0};
+    *v = (fluid_verlet){0};
     fsi_grid_init(&v->grid);
 }
 
-void ulph_verlet_free(ulph_verlet *v)
+void fluid_verlet_free(fluid_verlet *v)
 {
     free(v->offset);
     free(v->candidate);
     free(v->idle);
     free(v->x_built);
     fsi_grid_free(&v->grid);
-    ulph_verlet_init(v);
+    fluid_verlet_init(v);
 }
 
 /* Room for n particles and n_pairs candidates; 0, or -1 when memory runs out. */
-static int reserve(ulph_verlet *v, int n, int64_t n_pairs)
+static int reserve(fluid_verlet *v, int n, int64_t n_pairs)
 {
     int failed = 0;
     if (!v->offset || n > v->point_capacity) {
@@ -43,7 +43,7 @@ static int reserve(ulph_verlet *v, int n, int64_t n_pairs)
 }
 
 /* Pass 1: the length of i's row (0 for an idle wall, which is marked). */
-static int64_t row_length(ulph_verlet *v, const fsi_neighbour_grid *grid,
+static int64_t row_length(fluid_verlet *v, const fsi_neighbour_grid *grid,
                           const fluid_particles *p, int i, int prune)
 {
     fsi_grid_query q;
@@ -62,7 +62,7 @@ static int64_t row_length(ulph_verlet *v, const fsi_neighbour_grid *grid,
 }
 
 /* Pass 2: fills i's row in the grid's order. */
-static void fill_row(ulph_verlet *v, const fsi_neighbour_grid *grid, const fluid_particles *p,
+static void fill_row(fluid_verlet *v, const fsi_neighbour_grid *grid, const fluid_particles *p,
                      int i)
 {
     if (v->idle[i])
@@ -78,7 +78,7 @@ static void fill_row(ulph_verlet *v, const fsi_neighbour_grid *grid, const fluid
             v->candidate[e++] = j;
 }
 
-int ulph_verlet_build(ulph_verlet *v, const fsi_neighbour_grid *grid, const fluid_particles *p,
+int fluid_verlet_build(fluid_verlet *v, const fsi_neighbour_grid *grid, const fluid_particles *p,
                       double radius, int prune_idle_walls)
 {
     const int n = p->n;
@@ -87,17 +87,17 @@ int ulph_verlet_build(ulph_verlet *v, const fsi_neighbour_grid *grid, const flui
         return -1;
     v->radius = radius;
     v->periodic = grid->periodic;
-    const int parallel = n >= ULPH_PARALLEL_MIN_PARTICLES;
+    const int parallel = n >= FLUID_PARALLEL_MIN_PARTICLES;
     int64_t *offset = v->offset;
     offset[0] = 0;
-#pragma omp parallel for schedule(dynamic, ULPH_CHUNK) if (parallel)
+#pragma omp parallel for schedule(dynamic, FLUID_CHUNK) if (parallel)
     for (int i = 0; i < n; i++)
         offset[i + 1] = row_length(v, grid, p, i, prune_idle_walls);
     for (int i = 0; i < n; i++)
         offset[i + 1] += offset[i];
     if (reserve(v, n, offset[n]) != 0)
         return -1;
-#pragma omp parallel for schedule(dynamic, ULPH_CHUNK) if (parallel)
+#pragma omp parallel for schedule(dynamic, FLUID_CHUNK) if (parallel)
     for (int i = 0; i < n; i++)
         fill_row(v, grid, p, i);
     for (int64_t k = 0; k < (int64_t)n * FSI_DIM; k++)
@@ -110,12 +110,12 @@ int ulph_verlet_build(ulph_verlet *v, const fsi_neighbour_grid *grid, const flui
 /* Whether every particle is within skin / 2 of where it was at the last build (a
  * little less, so that round-off in the distances cannot lose a pair). False for a
  * non-finite position. */
-static int still_valid(const ulph_verlet *v, const fluid_particles *p)
+static int still_valid(const fluid_verlet *v, const fluid_particles *p)
 {
     const int n = p->n;
     const double limit2 = 0.999 * 0.25 * v->skin * v->skin;
     double largest = 0.0;
-#pragma omp parallel for schedule(dynamic, ULPH_CHUNK) if (n >= ULPH_PARALLEL_MIN_PARTICLES) \
+#pragma omp parallel for schedule(dynamic, FLUID_CHUNK) if (n >= FLUID_PARALLEL_MIN_PARTICLES) \
     reduction(max : largest)
     for (int i = 0; i < n; i++) {
         double d2 = 0.0;
@@ -129,12 +129,12 @@ static int still_valid(const ulph_verlet *v, const fluid_particles *p)
     return largest < limit2;
 }
 
-void ulph_verlet_invalidate(ulph_verlet *v)
+void fluid_verlet_invalidate(fluid_verlet *v)
 {
     v->builds = 0;
 }
 
-int ulph_verlet_update(ulph_verlet *v, const fluid_particles *p, double support, double skin)
+int fluid_verlet_update(fluid_verlet *v, const fluid_particles *p, double support, double skin)
 {
     if (v->builds > 0 && v->n == p->n && v->support == support && v->skin == skin &&
         still_valid(v, p))
@@ -142,7 +142,7 @@ int ulph_verlet_update(ulph_verlet *v, const fluid_particles *p, double support,
     v->support = support;
     v->skin = skin;
     if (fsi_grid_build(&v->grid, p->x, p->n, support + skin) != 0 ||
-        ulph_verlet_build(v, &v->grid, p, support + skin, 1) != 0)
+        fluid_verlet_build(v, &v->grid, p, support + skin, 1) != 0)
         return -1;
     return 1;
 }

@@ -25,13 +25,13 @@
  * driven close to a wall particle could be thrown back at any speed. Held, the energy
  * the contact can return is at most 0.0046 c0^2 per unit mass (h = 1.2 dx), a speed of
  * 0.1 c0, about the fastest flow 000 Eq. 7 sizes c0 for. */
-#ifndef ULPH_CONTACT_H
-#define ULPH_CONTACT_H
+#ifndef FSI_SOFT_CONTACT_H
+#define FSI_SOFT_CONTACT_H
 
 /* k c0^2 zeta f / (r_held r) at distance r, r_held = max(r, dx / 2) (multiply by
  * x_I - x_J for the acceleration of I): 0 for r >= dx or r <= 0.
  * k_c2 = k c0^2, inv_eta_scale = 1 / (0.75 h). */
-static inline double ulph_contact_factor(double r, double dx, double k_c2, double inv_eta_scale)
+static inline double soft_contact_factor(double r, double dx, double k_c2, double inv_eta_scale)
 {
     if (!(r > 0.0 && r < dx))
         return 0.0;

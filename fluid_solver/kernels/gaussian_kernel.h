@@ -1,5 +1,4 @@
-/* The kernel (influence function) of ULPH: the truncated, shifted Gaussian of
- * 000 Eq. 17,
+/* The truncated, shifted Gaussian kernel of 000 Eq. 17 (ULPH's influence function),
  *
  *     w(r) = alpha_d (exp(-(r/h)^2) - C)   for r < delta,   0 beyond,
  *
@@ -16,17 +15,13 @@
  * volume). The non-local operators (ulph_operators.h) do not depend on alpha: it
  * cancels between M^-1 and the sums; the density filter (000 Eq. 24) does not
  * either. It matters for plain kernel sums. */
-#ifndef ULPH_KERNEL_H
-#define ULPH_KERNEL_H
+#ifndef FSI_GAUSSIAN_KERNEL_H
+#define FSI_GAUSSIAN_KERNEL_H
 
 #include <math.h>
 #include <stdint.h>
 
-#include "ulph_exp.h"
-
-/* The seed paper's choices (000 §2.1.3, after Eq. 17): h = 1.2 dx, delta = 3 h. */
-#define ULPH_KERNEL_H_OVER_DX 1.2
-#define ULPH_KERNEL_SUPPORT_FACTOR 3.0
+#include "fast_exp.h"
 
 typedef struct {
     double h;               /* smoothing length [m] */
@@ -36,45 +31,45 @@ typedef struct {
     double shift;           /* C = exp(-q^2) */
     double alpha;           /* alpha_d [1/m^DIM] */
     double inv_h2;          /* 1 / h^2 [1/m^2] */
-} ulph_kernel;
+} gaussian_kernel;
 
 /* The normalisation alpha_d for dimension dim (2 or 3), smoothing length h and
  * support factor q; 0 for another dimension or non-positive h or q. */
-double ulph_kernel_normalisation(int dim, double h, double q);
+double gaussian_kernel_normalisation(int dim, double h, double q);
 
 /* Sets up the kernel of the build's dimension (FSI_DIM). Returns 0, or -1 when h or
  * support_factor is not a positive finite number (k is then zeroed: w = 0). */
-int ulph_kernel_init(ulph_kernel *k, double h, double support_factor);
+int gaussian_kernel_init(gaussian_kernel *k, double h, double support_factor);
 
 /* w at squared distance r2 (what the neighbour search returns: no square root).
  * Never negative: the difference exp(-r2/h^2) - C can round below zero just inside
  * the support. */
-static inline double ulph_kernel_w2(const ulph_kernel *k, double r2)
+static inline double gaussian_kernel_w2(const gaussian_kernel *k, double r2)
 {
     if (!(r2 < k->support2))
         return 0.0;
-    const double w = ulph_exp_neg(r2 * k->inv_h2) - k->shift;
+    const double w = fast_exp_neg(r2 * k->inv_h2) - k->shift;
     return w > 0.0 ? k->alpha * w : 0.0;
 }
 
 /* w over a row: r2_w[q] = w(r2_w[q]) for n squared distances all below the support's
  * square, without branches (a loop that vectorises where the target has a gather,
- * e.g. -mavx2, for the table of ulph_exp.h); the same values as ulph_kernel_w2. */
-static inline void ulph_kernel_w2_row(const ulph_kernel *k, double *r2_w, int64_t n)
+ * e.g. -mavx2, for the table of fast_exp.h); the same values as gaussian_kernel_w2. */
+static inline void gaussian_kernel_w2_row(const gaussian_kernel *k, double *r2_w, int64_t n)
 {
     for (int64_t q = 0; q < n; q++) {
         /* Both sides of each choice computed first: a pure select, no branch. */
         const double t = r2_w[q] * k->inv_h2, t_max = 700.0;
-        const double w = ulph_exp_neg_unchecked(t < t_max ? t : t_max) - k->shift;
+        const double w = fast_exp_neg_unchecked(t < t_max ? t : t_max) - k->shift;
         const double aw = k->alpha * w;
         r2_w[q] = w > 0.0 ? aw : 0.0;
     }
 }
 
 /* w at distance r. */
-static inline double ulph_kernel_w(const ulph_kernel *k, double r)
+static inline double gaussian_kernel_w(const gaussian_kernel *k, double r)
 {
-    return ulph_kernel_w2(k, r * r);
+    return gaussian_kernel_w2(k, r * r);
 }
 
 #endif

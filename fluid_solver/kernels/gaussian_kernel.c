@@ -1,11 +1,11 @@
-/* The Gaussian kernel of 000 Eqs. 17-18: see ulph_kernel.h. */
-#include "ulph_kernel.h"
+/* The Gaussian kernel of 000 Eqs. 17-18: see gaussian_kernel.h. */
+#include "gaussian_kernel.h"
 
 #include "dim.h"
 
 static const double PI = 3.14159265358979323846;
 
-double ulph_kernel_normalisation(int dim, double h, double q)
+double gaussian_kernel_normalisation(int dim, double h, double q)
 {
     if (!(h > 0.0) || !(q > 0.0))
         return 0.0;
@@ -20,9 +20,9 @@ double ulph_kernel_normalisation(int dim, double h, double q)
     return 1.0 / (integral * pow(h, dim));
 }
 
-int ulph_kernel_init(ulph_kernel *k, double h, double support_factor)
+int gaussian_kernel_init(gaussian_kernel *k, double h, double support_factor)
 {
-    *k = (ulph_kernel){0};
+    *k = (gaussian_kernel){0};
     if (!(h > 0.0) || !isfinite(h) || !(support_factor > 0.0) || !isfinite(support_factor))
         return -1;
     k->h = h;
@@ -30,7 +30,7 @@ int ulph_kernel_init(ulph_kernel *k, double h, double support_factor)
     k->support = support_factor * h;
     k->support2 = k->support * k->support;
     k->shift = exp(-support_factor * support_factor);
-    k->alpha = ulph_kernel_normalisation(FSI_DIM, h, support_factor);
+    k->alpha = gaussian_kernel_normalisation(FSI_DIM, h, support_factor);
     k->inv_h2 = 1.0 / (h * h);
     return 0;
 }

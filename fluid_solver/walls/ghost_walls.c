@@ -1,15 +1,17 @@
-/* Wall particles from the fluid around them (ulph_walls.h, 000 Eqs. 50-54). */
-#include "ulph_walls.h"
+/* Wall particles from the fluid around them (ghost_walls.h, 000 Eqs. 50-54). */
+#include "ghost_walls.h"
 
 #include <math.h>
 #include <string.h>
 
-void ulph_walls_update(const ulph_operators *ops, const ulph_eos *eos, const double *gravity,
+#include "fluid_parallel.h"
+
+void ghost_walls_update(const fluid_pairs *pairs, const tait_eos *eos, const double *gravity,
                        const unsigned char *free_slip, fluid_particles *p,
                        double *velocity_for_viscosity)
 {
     const int n = p->n;
-#pragma omp parallel for schedule(dynamic, ULPH_CHUNK) if (n >= ULPH_PARALLEL_MIN_PARTICLES)
+#pragma omp parallel for schedule(dynamic, FLUID_CHUNK) if (n >= FLUID_PARALLEL_MIN_PARTICLES)
     for (int s = 0; s < n; s++) {
         double *vv = &velocity_for_viscosity[s * FSI_DIM];
         if (!(p->flags[s] & (FLUID_PARTICLE_WALL | FLUID_PARTICLE_MOVING_BOUNDARY))) {
@@ -18,13 +20,13 @@ void ulph_walls_update(const ulph_operators *ops, const ulph_eos *eos, const dou
         }
         double sum_w = 0.0, sum_pw = 0.0, head[FSI_DIM] = {0}, v_mean[FSI_DIM] = {0};
         double toward[FSI_DIM] = {0};
-        for (int64_t k = ops->offset[s]; k < ops->offset[s + 1]; k++) {
-            const int f = ops->neighbour[k];
+        for (int64_t k = pairs->offset[s]; k < pairs->offset[s + 1]; k++) {
+            const int f = pairs->neighbour[k];
             if (!(p->flags[f] & FLUID_PARTICLE_FLUID))
                 continue;
-            const double w = ops->w[k];
+            const double w = pairs->w[k];
             double xsf[FSI_DIM]; /* x_f - x_S */
-            ulph_pair_vector(ops, p->x, s, f, xsf);
+            fluid_pair_vector(pairs, p->x, s, f, xsf);
             sum_w += w;
             sum_pw += p->pressure[f] * w;
             for (int d = 0; d < FSI_DIM; d++) {
@@ -45,7 +47,7 @@ void ulph_walls_update(const ulph_operators *ops, const ulph_eos *eos, const dou
             pressure /= sum_w;
         }
         p->pressure[s] = pressure = fmax(pressure, 0.0);
-        p->density[s] = ulph_eos_density(eos, pressure);
+        p->density[s] = tait_eos_density(eos, pressure);
         p->mass[s] = p->density[s] * p->volume[s];
         if ((p->flags[s] & FLUID_PARTICLE_WALL) && free_slip && free_slip[s]) {
             double norm = 0.0, vn = 0.0;

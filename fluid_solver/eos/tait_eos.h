@@ -9,18 +9,18 @@
  * same density (the two agree to O((p / (rho0 c0^2))^2), 2.5e-5 at 0.5 % compression).
  * The inverse is clamped at a tension of -rho0 c0^2 / gamma, where the density would
  * reach zero. */
-#ifndef ULPH_EOS_H
-#define ULPH_EOS_H
+#ifndef FSI_TAIT_EOS_H
+#define FSI_TAIT_EOS_H
 
 #include <math.h>
 
 typedef struct {
     double rho0, c0, gamma;
-} ulph_eos;
+} tait_eos;
 
 /* r^gamma; gamma = 7 (000 Eq. 6, the default) by multiplications: pow() of every
  * particle at every evaluation cost as much as the walls. Equal to pow to round-off. */
-static inline double ulph_eos_power(double r, double gamma)
+static inline double tait_eos_power(double r, double gamma)
 {
     if (gamma == 7.0) {
         const double r2 = r * r, r4 = r2 * r2;
@@ -29,12 +29,12 @@ static inline double ulph_eos_power(double r, double gamma)
     return pow(r, gamma);
 }
 
-static inline double ulph_eos_pressure(const ulph_eos *e, double rho)
+static inline double tait_eos_pressure(const tait_eos *e, double rho)
 {
-    return e->rho0 * e->c0 * e->c0 / e->gamma * (ulph_eos_power(rho / e->rho0, e->gamma) - 1.0);
+    return e->rho0 * e->c0 * e->c0 / e->gamma * (tait_eos_power(rho / e->rho0, e->gamma) - 1.0);
 }
 
-static inline double ulph_eos_density(const ulph_eos *e, double p)
+static inline double tait_eos_density(const tait_eos *e, double p)
 {
     if (p == 0.0)
         return e->rho0; /* exactly what the formula gives; every wall away from water */
