@@ -1,19 +1,23 @@
 #!/usr/bin/env bash
-# Speed of the ULPH fluid (docs/performance.md, "Fluid (ULPH)"): the F1 dam break
-# (cases/f1_dam_break.ini) at dx = a / 57 = 1.0026 mm and a / 114 = 0.5013 mm (the
-# nearest spacings to 1 mm and 0.5 mm that divide the column a = 0.05715 m; walls four
-# layers thick, scaled with the spacing as bench/f1_dam_break.sh does), on 1 and 2
-# threads, RUNS runs each, the first END seconds of the collapse (defaults: 0.005 s =
-# 1663 steps at a / 57, 0.001 s = 665 steps at a / 114; cfl_acoustic = 0.1, c0 = 40 m/s).
+# Speed of the fluid schemes (docs/performance.md): the F1 dam break
+# (cases/f1_dam_break.ini) at dx = a / N for each N of --n (default 57 and 114: the
+# nearest spacings to 1 mm and 0.5 mm that divide the column a = 0.05715 m; 100 is the
+# peer's scene, 20 000 fluid particles; walls four layers thick, scaled with the
+# spacing as bench/f1_dam_break.sh does), for each scheme of --schemes
+# (`--set fluid.solver=SCHEME`, the scheme's own keys from the case's [fluid.SCHEME]
+# section or its defaults), on 1 and 2 threads, RUNS runs each, the first END seconds
+# of the collapse (defaults: 0.005 s at a / 57 and a / 100, 0.001 s at a / 114).
 #
-#   bench/fluid_performance.sh [OUT] [--runs=N] [--threads="1 2"] [--end57=T] [--end114=T]
-#                              [--set=k=v ...]
+#   bench/fluid_performance.sh [OUT] [--runs=N] [--threads="1 2"] [--n="57 114"]
+#                              [--schemes="ulph wcsph"] [--end57=T] [--end100=T]
+#                              [--end114=T] [--set=k=v ...]
 #
-# Writes OUT/fluid_performance.md: particles, steps, the median particle-steps/s (each
-# fluid.log's "performance:" line: fluid particles x steps / (rates + integration)
-# seconds), the per-phase split of the median run, and the speed-up of 2 threads over 1.
-# FSI_BUILD=DIR runs another build's binaries (e.g. an older commit's, for a comparison
-# within one run of the script).
+# Writes OUT/fluid_performance.md: per scheme, resolution and thread count the
+# particles, steps, the median particle-steps/s (each fluid.log's "performance:" line:
+# fluid particles x steps / (rates + integration) seconds), the median wall time of the
+# whole run to END, the speed-up of 2 threads over 1, and the largest phases of the
+# median run. FSI_BUILD=DIR runs another build's binaries (e.g. an older commit's, for a
+# comparison within one run of the script).
 set -euo pipefail
 
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -23,14 +27,20 @@ PY=/usr/bin/python3
 OUT="$ROOT/out/bench/fluid_performance"
 RUNS=3
 THREADS="1 2"
+NS="57 114"
+SCHEMES="ulph wcsph"
 END57=0.005
+END100=0.005
 END114=0.001
 EXTRA=()
 for arg in "$@"; do
   case "$arg" in
     --runs=*) RUNS="${arg#*=}" ;;
     --threads=*) THREADS="${arg#*=}" ;;
+    --n=*) NS="${arg#*=}" ;;
+    --schemes=*) SCHEMES="${arg#*=}" ;;
     --end57=*) END57="${arg#*=}" ;;
+    --end100=*) END100="${arg#*=}" ;;
     --end114=*) END114="${arg#*=}" ;;
     --set=*) EXTRA+=(--set "${arg#*=}") ;;
     -*) echo "fluid_performance: unknown option $arg" >&2; exit 2 ;;
@@ -43,48 +53,62 @@ log() { echo "[fluid_performance] $*" >&2; }
 
 # Runs are interleaved (run 1 of every configuration, then run 2, ...) so that a change
 # in the machine's load spreads over all of them.
+end_of() { case "$1" in 57) echo "$END57" ;; 100) echo "$END100" ;; 114) echo "$END114" ;;
+                        *) echo "$END57" ;; esac; }
 for r in $(seq 1 "$RUNS"); do
-  for n in 57 114; do
-    end=$END57; [ "$n" = 114 ] && end=$END114
-    for t in $THREADS; do
-      log "a / $n, $t thread(s), run $r ..."
-      f1_run "$RUN" "$n" "$t" "$OUT/n${n}_t${t}_r$r" --set "run.end_time=$end" "${EXTRA[@]}" ||
-        log "run failed, see $OUT/n${n}_t${t}_r$r.txt"
+  for n in $NS; do
+    for scheme in $SCHEMES; do
+      for t in $THREADS; do
+        dir="$OUT/${scheme}_n${n}_t${t}_r$r"
+        log "$scheme, a / $n, $t thread(s), run $r ..."
+        f1_run "$RUN" "$n" "$t" "$dir" --set "run.end_time=$(end_of "$n")" \
+          --set "fluid.solver=$scheme" "${EXTRA[@]}" || log "run failed, see $dir.txt"
+      done
     done
   done
 done
 
-"$PY" - "$OUT" "$RUNS" "$THREADS" > "$OUT/fluid_performance.md" <<'EOF'
-import re, statistics, sys
-out, runs, threads = sys.argv[1], int(sys.argv[2]), sys.argv[3].split()
+"$PY" - "$OUT" "$RUNS" "$THREADS" "$NS" "$SCHEMES" > "$OUT/fluid_performance.md" <<'EOF'
+import os, re, statistics, sys
+out, runs = sys.argv[1], int(sys.argv[2])
+threads, ns, schemes = sys.argv[3].split(), sys.argv[4].split(), sys.argv[5].split()
 perf = re.compile(r"performance: (\d+) steps of (\d+) fluid particles \((\d+) in all, (\d+) "
                   r"neighbour pairs\) on (\d+) thread.*\(([0-9.e+]+) particle-steps/s\)")
-phase = re.compile(r"([a-z :]+?) ([0-9.]+) s \(([0-9.]+) %\)")
-print("| a / dx | fluid particles (all) | steps | threads | particle-steps/s, median "
-      "(runs) | speed-up | neighbour search | operators | EOS | walls | density filter "
-      "| momentum | integration | exchange + output |")
-print("| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |")
-for n in (57, 114):
-    base = None
-    for t in threads:
-        rows = []
-        for r in range(1, runs + 1):
-            text = open(f"{out}/n{n}_t{t}_r{r}/fluid.log").read()
-            m = perf.search(text)
-            split = dict((k.strip(), float(p)) for k, s, p in
-                         phase.findall(text.split("phases:")[-1]))
-            rows.append((float(m.group(6)), m, split))
-        rows.sort(key=lambda x: x[0])
-        med, m, split = rows[len(rows) // 2]
-        base = base or med
-        share = lambda k: "%.1f %%" % split.get(k, 0.0)
-        print(f"| {n} | {m.group(2)} ({m.group(3)}) | {m.group(1)} | {t} | {med:.3g} "
-              f"({' '.join('%.3g' % x[0] for x in rows)}) | {med / base:.2f} | "
-              f"{share('rates: neighbour search')} | {share('rates: operators')} | "
-              f"{share('rates: equation of state')} | {share('rates: walls')} | "
-              f"{share('rates: density filter')} | {share('rates: momentum')} | "
-              f"{share('integration')} | "
-              f"{split.get('exchange', 0) + split.get('output', 0):.1f} % |")
+phase = re.compile(r"([a-z :-]+?) ([0-9.]+) s \(([0-9.]+) %\)")
+wall = re.compile(r"finished in ([0-9.]+) s")
+print("| scheme | a / dx | fluid particles (all) | steps | threads | particle-steps/s, "
+      "median (runs) | wall time [s], median | speed-up | largest phases of the median run |")
+print("| --- | --- | --- | --- | --- | --- | --- | --- | --- |")
+for n in ns:
+    for scheme in schemes:
+        base = None
+        for t in threads:
+            rows = []
+            for r in range(1, runs + 1):
+                d = f"{out}/{scheme}_n{n}_t{t}_r{r}"
+                if not os.path.exists(f"{d}/fluid.log"):
+                    continue
+                text = open(f"{d}/fluid.log").read()
+                m = perf.search(text)
+                w = wall.search(open(f"{d}.txt").read())
+                if not m or not w:
+                    continue
+                split = [(k.strip(), float(p)) for k, s, p in
+                         phase.findall(text.split("phases:")[-1])]
+                rows.append((float(m.group(6)), m, split, float(w.group(1))))
+            if not rows:
+                print(f"| {scheme} | {n} | - | - | {t} | failed | - | - | - |")
+                continue
+            rows.sort(key=lambda x: x[0])
+            med, m, split, _ = rows[len(rows) // 2]
+            wall_med = statistics.median(x[3] for x in rows)
+            base = base or med
+            top = ", ".join(f"{k} {p:.0f} %" for k, p in
+                            sorted((x for x in split if x[0] != "rates"),
+                                   key=lambda x: -x[1])[:4])
+            print(f"| {scheme} | {n} | {m.group(2)} ({m.group(3)}) | {m.group(1)} | {t} | "
+                  f"{med:.3g} ({' '.join('%.3g' % x[0] for x in rows)}) | {wall_med:.1f} | "
+                  f"{med / base:.2f} | {top} |")
 EOF
 cat "$OUT/fluid_performance.md"
 log "report: $OUT/fluid_performance.md"
