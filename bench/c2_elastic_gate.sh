@@ -56,7 +56,7 @@ echo "solvers,resolution,dx_m,particles,threads,wall_s,error" > "$OUT/accuracy_s
     thr=$(cat "$run/fluid.log" "$run/solid.log" 2>/dev/null | grep -o 'on [0-9]* thread(s)' | tail -1 | awk '{print $2}' || true)
     if grep -q "^fsi run: finished" "$txt"; then endst="t = $tend s"; else endst="unstable, last probe row t = $tend s"; fi
     if grep -q "^fsi run: finished" "$txt" && [ "$nx" = 9 ]; then
-      echo "ULPH + NOSB-PD,T/dx=$(calc "round($ratio)"),$dx,$nf,${thr:-?},$wt,$ex" >> "$OUT/accuracy_speed.csv"
+      echo "$(sweep_solvers "$run"),T/dx=$(calc "round($ratio)"),$dx,$nf,${thr:-?},$wt,$ex" >> "$OUT/accuracy_speed.csv"
     fi
     echo "| $dx m | $ratio | $nf | $ns | $endst | $(calc "'-' if $nx == 0 else '%.1f %%' % (100 * $ex)") ($nx / 9) | $(calc "'-' if $ny == 0 else '%.1f %%' % (100 * $ey)") ($ny / 9) | $pux m ($tux s) | $puy m ($tuy s) | ${wt} s | ${thr:-?} |"
   done

@@ -49,7 +49,7 @@ echo "solvers,resolution,dx_m,particles,threads,wall_s,error" > "$OUT/accuracy_s
     if grep -q "^fsi run: finished" "$txt"; then endst="t = $tend s"; else endst="unstable, last frame t = $tend s"; fi
     echo "| $dx m | $ratio | $n | $pts / 15 | $(calc "'%.1f %%' % (100 * $rms)") | $endst | $inmax, $inend | ${wt} s | ${thr:-?} | ${pss:-?} |"
     if [ "$pts" = 15 ]; then
-      echo "ULPH,a/$(calc "round($ratio)"),$dx,$n,${thr:-?},$wt,$rms" >> "$OUT/accuracy_speed.csv"
+      echo "$(sweep_solvers "$run"),a/$(calc "round($ratio)"),$dx,$n,${thr:-?},$wt,$rms" >> "$OUT/accuracy_speed.csv"
     fi
   done
 } > "$REPORT"

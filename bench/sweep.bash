@@ -62,3 +62,17 @@ sweep_run_failure_pair() {
   sweep_run "$OUT/no_failure" "$1" --set solid.failure=false &
   wait
 }
+
+# The solver combination of a run, from its resolved case: "ULPH", "WCSPH + NOSB-PD", ...
+# (the line of the accuracy-against-speed charts, bench/accuracy_speed.py).
+sweep_solvers() {
+  awk -F' *= *' '
+    /^\[/ { section = $0; sub(/\].*/, "]", section); next }
+    (section == "[fluid]" || section == "[solid]") && $1 == "solver" {
+      name = $2; sub(/ *;.*/, "", name)
+      if (name == "nosbpd") name = "NOSB-PD"; else name = toupper(name)
+      if (section == "[fluid]") fluid = name; else solid = name
+    }
+    END { if (fluid != "" && solid != "") print fluid " + " solid; else print fluid solid }
+  ' "$1/case.resolved.ini"
+}
