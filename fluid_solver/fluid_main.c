@@ -481,9 +481,10 @@ static int evaluate_at(void *owner, double t)
     return evaluate(s);
 }
 
-/* Midpoint rule for the work of moving walls (the energy check's budget) and the
- * impulse on the solid's particles (the loads sent back). */
-static int midpoint(void *owner, double dt)
+/* The work of moving walls over a step (the energy check's budget) and the impulse on
+ * the solid's particles (the loads sent back), from the rates the step moves with (the
+ * midpoint rule for the predictor-corrector). */
+static int step_loads(void *owner, double dt)
 {
     fluid_run *s = owner;
     s->wall_work += dt * fluid_wall_motion_power(&s->motion, s->t, &s->p, s->accel,
@@ -498,7 +499,7 @@ static int midpoint(void *owner, double dt)
 /* One step of the scheme (rates at the start state already in drho, accel). */
 static int step(fluid_run *s, double dt)
 {
-    const fluid_step_hooks hooks = {s, evaluate_at, midpoint, s->drho, s->accel,
+    const fluid_step_hooks hooks = {s, evaluate_at, step_loads, s->drho, s->accel,
                                     &s->timers, s->t_integrate};
     const double t_start = s->t;
     if (fluid_scheme_step(s->scheme, &s->p, t_start, dt, &hooks, s->msg, sizeof s->msg) != 0)

@@ -64,10 +64,11 @@ typedef struct {
      * particles' current state into drho and accel below. 0, or -1 (the owner keeps
      * the message). */
     int (*evaluate)(void *owner, double t);
-    /* Called once per step after the evaluation at its midpoint: the loads on the solid
-     * and the moving walls' work over the step of length dt by the midpoint rule.
-     * 0, or -1 (the owner's message). */
-    int (*midpoint)(void *owner, double dt);
+    /* Called once per step with the rates the step moves the particles with (the
+     * predictor-corrector's at the midpoint, Verlet's at the start) in the last
+     * evaluation: the loads on the solid and the moving walls' work over the step of
+     * length dt. 0, or -1 (the owner's message). */
+    int (*loads)(void *owner, double dt);
     double *drho, *accel;       /* the rates of the last evaluation, n and n * FSI_DIM */
     fsi_timers *timers;         /* the integration's own time goes to integrate_timer */
     int integrate_timer;

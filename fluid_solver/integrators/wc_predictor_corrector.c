@@ -65,7 +65,7 @@ int fluid_wc_step(fluid_wc_integrator *in, fluid_particles *p, double t, double 
     }
     timer(hooks, 0);
     if (hooks->evaluate(hooks->owner, t + 0.5 * dt) != 0 ||
-        hooks->midpoint(hooks->owner, dt) != 0)
+        hooks->loads(hooks->owner, dt) != 0)
         return -1;
     timer(hooks, 1);
     for (int i = 0; i < n; i++) {

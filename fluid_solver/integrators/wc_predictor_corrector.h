@@ -23,7 +23,7 @@ typedef struct {
 } fluid_wc_integrator;
 
 /* One step of dt from time t with the start rates in hooks->drho, hooks->accel:
- * the predictor, the evaluation at t + dt/2 (hooks->evaluate), hooks->midpoint, the
+ * the predictor, the evaluation at t + dt/2 (hooks->evaluate), hooks->loads, the
  * corrector. 0, or -1 (memory: msg; an evaluation: the owner's message). */
 int fluid_wc_step(fluid_wc_integrator *in, fluid_particles *p, double t, double dt,
                   const fluid_step_hooks *hooks, char *msg, size_t msg_size);
