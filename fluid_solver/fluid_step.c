@@ -3,6 +3,8 @@
 
 #include <math.h>
 
+#include "small_tensor.h"
+
 double fluid_sound_speed(const fsi_case *c, const char *role, double rho0)
 {
     double c0 = fsi_case_get_real(c, role, "sound_speed", 0.0);
@@ -42,4 +44,13 @@ double fluid_stable_step(const fluid_step_limits *l, double vmax, double amax)
     if (amax > 0.0)
         dt = fmin(dt, l->cfl_force * sqrt(l->h / amax));
     return dt;
+}
+
+double fluid_largest_speed(const fluid_particles *p)
+{
+    double vmax = 0.0;
+    for (int i = 0; i < p->n; i++)
+        if (p->flags[i] & FLUID_PARTICLE_FLUID)
+            vmax = fmax(vmax, fsi_vec_norm(&p->v[i * FSI_DIM]));
+    return vmax;
 }

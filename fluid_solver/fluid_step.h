@@ -9,6 +9,7 @@
 #define FSI_FLUID_STEP_H
 
 #include "case_file.h"
+#include "fluid_particles.h"
 
 /* What the step limits need. */
 typedef struct {
@@ -35,5 +36,8 @@ double fluid_viscous_step(const fluid_step_limits *l);
 /* The stable step: the smallest of the acoustic, viscous and force limit
  * cfl_force sqrt(h / amax) (Monaghan 1992; none when amax = 0). */
 double fluid_stable_step(const fluid_step_limits *l, double vmax, double amax);
+
+/* The largest speed of a fluid particle of p (the vmax of the acoustic limit) [m/s]. */
+double fluid_largest_speed(const fluid_particles *p);
 
 #endif

@@ -9,6 +9,7 @@
 #include "run_keys.h"
 #include "solid_keys.h"
 #include "ulph_keys.h"
+#include "wcsph_keys.h"
 
 static const fsi_key_spec participant_keys[] = {
     {"solver", FSI_KEY_STRING, "-", NULL, 0, 0, 0, NULL,
@@ -33,6 +34,7 @@ static const fsi_key_table *const nosbpd_tables[] = {&fsi_solid_common_keys,
                                                      &material_key_table, &fsi_nosbpd_keys};
 
 static const fsi_key_table *const ulph_tables[] = {&fsi_fluid_common_keys, &fsi_ulph_keys};
+static const fsi_key_table *const wcsph_tables[] = {&fsi_fluid_common_keys, &fsi_wcsph_keys};
 
 #define N_TABLES(a) ((int)(sizeof(a) / sizeof((a)[0])))
 
@@ -62,6 +64,12 @@ static const fsi_solver_spec solvers[] = {
      "non-local operators, fixed ghost walls and predictor-corrector stepping (seed 000 "
      "section 2.1, fluid_solver/ulph, docs/ulph.md).",
      ulph_tables, N_TABLES(ulph_tables), fsi_fluid_object_kinds, FSI_FLUID_N_OBJECT_KINDS,
+     fluid_geometry_check},
+    {"wcsph", "fluid", "fsi-fluid-wcsph",
+     "Weakly compressible SPH with delta-SPH density diffusion, the Wendland C2 kernel, "
+     "Adami dummy walls and a soft contact with the solid (seed 004 section 2, "
+     "fluid_solver/wcsph, docs/wcsph.md).",
+     wcsph_tables, N_TABLES(wcsph_tables), fsi_fluid_object_kinds, FSI_FLUID_N_OBJECT_KINDS,
      fluid_geometry_check},
 };
 

@@ -30,4 +30,14 @@ static inline void fluid_pair_vector(const fluid_pairs *pairs, const double *x, 
     fsi_periodic_min_image(&pairs->periodic, rel);
 }
 
+/* The entry of J in I's row (the same pair data every pass over I's row reads), or -1
+ * when J is not I's neighbour. */
+static inline int64_t fluid_pairs_find(const fluid_pairs *pairs, int i, int j)
+{
+    for (int64_t k = pairs->offset[i]; k < pairs->offset[i + 1]; k++)
+        if (pairs->neighbour[k] == j)
+            return k;
+    return -1;
+}
+
 #endif

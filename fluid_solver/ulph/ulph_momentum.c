@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "small_tensor.h"
+#include "pair_reaction.h"
 #include "soft_contact.h"
 
 int ulph_momentum_reserve(ulph_momentum_scratch *s, int n)
@@ -163,33 +164,18 @@ void ulph_momentum_rates(const ulph_operators *ops, const ulph_momentum_params *
     }
 }
 
+/* The force density on I from entry k of its row, for fluid_pair_reaction. */
+static void pair_term(const void *context, int i, int64_t k, double *out)
+{
+    const pair_context *c = context;
+    pair_force(c, i, k, fsi_mat_trace(&c->ops->shape[(size_t)i * FSI_MAT_SIZE]), out);
+}
+
 void ulph_boundary_loads(const ulph_operators *ops, const ulph_momentum_params *prm,
                          const fluid_particles *p, const double *velocity_for_viscosity,
                          const ulph_momentum_scratch *scratch, double *force)
 {
-    const int n = p->n;
     const pair_context c = make_context(ops, prm, p, velocity_for_viscosity,
                                         scratch->stress_shape);
-#pragma omp parallel for schedule(dynamic, FLUID_CHUNK) if (n >= FLUID_PARALLEL_MIN_PARTICLES)
-    for (int b = 0; b < n; b++) {
-        double *f_b = &force[b * FSI_DIM];
-        memset(f_b, 0, FSI_DIM * sizeof *f_b);
-        if (!(p->flags[b] & FLUID_PARTICLE_MOVING_BOUNDARY))
-            continue;
-        for (int64_t kb = ops->pairs.offset[b]; kb < ops->pairs.offset[b + 1]; kb++) {
-            const int i = ops->pairs.neighbour[kb];
-            if (!(p->flags[i] & FLUID_PARTICLE_FLUID))
-                continue;
-            /* b's entry in i's row: the same w and g_IB the rates used. */
-            for (int64_t k = ops->pairs.offset[i]; k < ops->pairs.offset[i + 1]; k++) {
-                if (ops->pairs.neighbour[k] != b)
-                    continue;
-                double f[FSI_DIM];
-                pair_force(&c, i, k, fsi_mat_trace(&ops->shape[(size_t)i * FSI_MAT_SIZE]), f);
-                for (int d = 0; d < FSI_DIM; d++)
-                    f_b[d] -= p->volume[i] * f[d];
-                break;
-            }
-        }
-    }
+    fluid_pair_reaction(&ops->pairs, p, p->volume, pair_term, &c, force);
 }

@@ -295,11 +295,7 @@ void fluid_scheme_after_step(fluid_scheme *s, fluid_particles *p, long count)
 
 double fluid_scheme_stable_dt(const fluid_scheme *s, const fluid_particles *p, double amax)
 {
-    double vmax = 0.0;
-    for (int i = 0; i < p->n; i++)
-        if (p->flags[i] & FLUID_PARTICLE_FLUID)
-            vmax = fmax(vmax, fsi_vec_norm(&p->v[i * FSI_DIM]));
-    return fluid_stable_step(&s->step, vmax, amax);
+    return fluid_stable_step(&s->step, fluid_largest_speed(p), amax);
 }
 
 void fluid_scheme_pressure_gradient(const fluid_scheme *s, const fluid_particles *p,

@@ -1,0 +1,19 @@
+/* The keys of the WCSPH scheme in [fluid] (solver = wcsph). */
+#ifndef WCSPH_KEYS_H
+#define WCSPH_KEYS_H
+
+#include "case_file.h"
+
+/* h / dx of the Wendland C2 kernel (support 2h): 1.2 sqrt(2) = 1.697, the 2D smoothing
+ * length of DualSPHysics (coefh = 1.2, h = coefh sqrt(2) dx; docs/wcsph.md). */
+#define WCSPH_H_OVER_DX 1.7
+/* beta_1 of 004 Eq. 8 (Monaghan's alpha): 0.01, docs/wcsph.md. */
+#define WCSPH_ARTIFICIAL_VISCOSITY 0.01
+/* delta of 004 Eq. 6. */
+#define WCSPH_DENSITY_DIFFUSION 0.1
+/* k of the soft contact (004 Eq. 21). */
+#define WCSPH_SOLID_CONTACT 0.01
+
+extern const fsi_key_table fsi_wcsph_keys;
+
+#endif

@@ -1,0 +1,271 @@
+/* The WCSPH scheme behind fluid_scheme.h (004 §2, docs/wcsph.md): one evaluation of the
+ * rates is
+ *   1. pressure and volume of every fluid particle from its density (Tait, 004 Eq. 4);
+ *   2. the pairs within 2h from the Verlet candidates (wcsph_pairs), W and dW/dr of the
+ *      Wendland C2 kernel (004 Eq. 5);
+ *   3. the dummy wall particles, and the solid's particles when they are dummies, from
+ *      the fluid around them (004 Eqs. 10-11, walls/ghost_walls.h);
+ *   4. renormalised density gradient, viscous stress, sound speed (wcsph_gradients);
+ *   5. continuity with density diffusion and momentum (004 Eqs. 6-9, wcsph_rates).
+ * Steps with the shared predictor-corrector (004 §4) or the Verlet scheme. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "fluid_scheme.h"
+#include "fluid_parallel.h"
+#include "fluid_step.h"
+#include "ghost_walls.h"
+#include "grow.h"
+#include "small_tensor.h"
+#include "tait_eos.h"
+#include "wc_predictor_corrector.h"
+#include "wc_verlet.h"
+#include "wcsph_keys.h"
+#include "wcsph_pairs.h"
+#include "wcsph_rates.h"
+#include "wendland_c2.h"
+
+enum { PHASE_SEARCH, PHASE_PAIRS, PHASE_STATE, PHASE_WALLS, PHASE_GRADIENTS, PHASE_MOMENTUM,
+       N_PHASES };
+static const char *const phase_name[N_PHASES] = {
+    "rates: neighbour search", "rates: pairs", "rates: equation of state", "rates: walls",
+    "rates: gradients", "rates: momentum"};
+
+struct fluid_scheme {
+    wendland_c2_kernel kernel;
+    tait_eos eos;
+    wcsph_params prm;
+    fluid_verlet list;
+    double skin;                /* of the candidate lists [m] */
+    wcsph_pairs pairs;
+    wcsph_scratch scratch;
+    const unsigned char *free_slip;
+    double *velocity_for_viscosity;
+    int capacity;
+    fluid_step_limits step;
+    int verlet;                 /* 1: the Verlet integrator */
+    fluid_wc_integrator predictor_corrector;
+    fluid_wc_verlet verlet_integrator;
+    fsi_timers *timers;
+    int phase[N_PHASES];
+};
+
+void fluid_scheme_use_timers(fluid_scheme *s, fsi_timers *t)
+{
+    s->timers = t;
+    for (int k = 0; t && k < N_PHASES; k++)
+        s->phase[k] = fsi_timer_index(t, phase_name[k]);
+}
+
+static void phase(fluid_scheme *s, int which, int start)
+{
+    if (s->timers && start)
+        fsi_timer_start(s->timers, s->phase[which]);
+    else if (s->timers)
+        fsi_timer_stop(s->timers, s->phase[which]);
+}
+
+void fluid_scheme_particles_reordered(fluid_scheme *s)
+{
+    fluid_verlet_invalidate(&s->list);
+    fluid_wc_verlet_restart(&s->verlet_integrator);
+}
+
+static int reserve(fluid_scheme *s, int n)
+{
+    if (n <= s->capacity && s->velocity_for_viscosity)
+        return 0;
+    const size_t cap = fsi_grown_capacity((size_t)n);
+    int failed = 0;
+    s->velocity_for_viscosity = fsi_grow(s->velocity_for_viscosity,
+                                         cap * FSI_DIM * sizeof *s->velocity_for_viscosity,
+                                         &failed);
+    if (failed || wcsph_scratch_reserve(&s->scratch, (int)cap) != 0)
+        return -1;
+    s->capacity = (int)cap;
+    return 0;
+}
+
+static int choice_is(const fsi_case *c, const char *role, const char *key, const char *word)
+{
+    const char *v = fsi_case_get(c, role, key);
+    return v && strcmp(v, word) == 0;
+}
+
+fluid_scheme *fluid_scheme_create(const fsi_case *c, const char *role,
+                                  const fluid_properties *props, const fluid_particles *p,
+                                  char *msg, size_t msg_size)
+{
+    fluid_scheme *s = calloc(1, sizeof *s);
+    if (!s) {
+        snprintf(msg, msg_size, "out of memory for the WCSPH scheme");
+        return NULL;
+    }
+    const double h_over_dx = fsi_case_get_real(c, role, "smoothing_factor", WCSPH_H_OVER_DX);
+    if (wendland_c2_init(&s->kernel, h_over_dx * p->spacing) != 0) {
+        snprintf(msg, msg_size, "[%s] smoothing_factor: no kernel with h = %g m", role,
+                 h_over_dx * p->spacing);
+        free(s);
+        return NULL;
+    }
+    s->eos = (tait_eos){props->density, props->sound_speed, props->tait_exponent};
+    wcsph_params *prm = &s->prm;
+    prm->h = s->kernel.h;
+    prm->c0 = props->sound_speed;
+    prm->rho0 = props->density;
+    prm->gamma = props->tait_exponent;
+    prm->viscosity = props->viscosity;
+    prm->beta1 = fsi_case_get_real(c, role, "artificial_viscosity", WCSPH_ARTIFICIAL_VISCOSITY);
+    prm->beta2 = fsi_case_get_real(c, role, "artificial_viscosity_quadratic", 0.0);
+    prm->delta = fsi_case_get_real(c, role, "density_diffusion", WCSPH_DENSITY_DIFFUSION);
+    prm->antuono = choice_is(c, role, "density_diffusion_form", "antuono");
+    prm->laplacian = choice_is(c, role, "viscous_operator", "laplacian");
+    prm->solid_dummy = choice_is(c, role, "solid_coupling", "dummy");
+    prm->contact = fsi_case_get_real(c, role, "solid_contact", WCSPH_SOLID_CONTACT);
+    prm->spacing = p->spacing;
+    memcpy(prm->gravity, props->gravity, sizeof prm->gravity);
+    s->free_slip = props->free_slip;
+    fluid_step_limits_read(&s->step, c, role);
+    s->step.h = s->kernel.h;
+    s->step.sound_speed = props->sound_speed;
+    s->step.density = props->density;
+    s->step.viscosity = props->viscosity;
+    s->verlet = choice_is(c, role, "integrator", "verlet");
+    fluid_wc_verlet_init(&s->verlet_integrator, FLUID_VERLET_EULER_INTERVAL);
+    s->skin = fsi_case_get_real(c, role, "neighbour_skin", FLUID_VERLET_SKIN) * s->kernel.support;
+    fluid_verlet_init(&s->list);
+    fsi_grid_set_periodic(&s->list.grid, &props->periodic);
+    wcsph_pairs_init(&s->pairs);
+    if (reserve(s, p->n) != 0) {
+        fluid_scheme_free(s);
+        snprintf(msg, msg_size, "out of memory for the WCSPH scheme of %d particles", p->n);
+        return NULL;
+    }
+    return s;
+}
+
+void fluid_scheme_free(fluid_scheme *s)
+{
+    if (!s)
+        return;
+    fluid_verlet_free(&s->list);
+    wcsph_pairs_free(&s->pairs);
+    wcsph_scratch_free(&s->scratch);
+    fluid_wc_integrator_free(&s->predictor_corrector);
+    fluid_wc_verlet_free(&s->verlet_integrator);
+    free(s->velocity_for_viscosity);
+    free(s);
+}
+
+double fluid_scheme_pressure(const fluid_scheme *s, double density)
+{
+    return tait_eos_pressure(&s->eos, density);
+}
+
+double fluid_scheme_density(const fluid_scheme *s, double pressure)
+{
+    return tait_eos_density(&s->eos, pressure);
+}
+
+double fluid_scheme_smoothing_length(const fluid_scheme *s)
+{
+    return s->kernel.h;
+}
+
+double fluid_scheme_support(const fluid_scheme *s)
+{
+    return s->kernel.support;
+}
+
+/* 004 Eq. 4 both ways (a weakly compressible liquid under tension near a free surface),
+ * V = m / rho. */
+static void fluid_state(const fluid_scheme *s, fluid_particles *p)
+{
+    const int n = p->n;
+#pragma omp parallel for schedule(dynamic, FLUID_CHUNK) if (n >= FLUID_PARALLEL_MIN_PARTICLES)
+    for (int i = 0; i < n; i++)
+        if (p->flags[i] & FLUID_PARTICLE_FLUID) {
+            p->pressure[i] = tait_eos_pressure(&s->eos, p->density[i]);
+            p->volume[i] = p->mass[i] / p->density[i];
+        }
+}
+
+int fluid_scheme_rates(fluid_scheme *s, fluid_particles *p, double *drho_dt, double *dv_dt,
+                       char *msg, size_t msg_size)
+{
+    if (reserve(s, p->n) != 0) {
+        snprintf(msg, msg_size, "out of memory for the WCSPH scheme of %d particles", p->n);
+        return -1;
+    }
+    phase(s, PHASE_STATE, 1);
+    fluid_state(s, p);
+    phase(s, PHASE_STATE, 0);
+    phase(s, PHASE_SEARCH, 1);
+    int rc = fluid_verlet_update(&s->list, p, s->kernel.support, s->skin) < 0 ? -1 : 0;
+    phase(s, PHASE_SEARCH, 0);
+    phase(s, PHASE_PAIRS, 1);
+    rc = rc != 0 ? rc : wcsph_pairs_update(&s->pairs, &s->kernel, &s->list, p);
+    phase(s, PHASE_PAIRS, 0);
+    if (rc != 0) {
+        snprintf(msg, msg_size, "cannot build the neighbour lists of %d particles (a "
+                 "position is not finite, or memory ran out)", p->n);
+        return -1;
+    }
+    phase(s, PHASE_WALLS, 1);
+    ghost_walls_update(&s->pairs.pairs, &s->eos, s->prm.gravity, s->free_slip, p,
+                       s->velocity_for_viscosity);
+    phase(s, PHASE_WALLS, 0);
+    phase(s, PHASE_GRADIENTS, 1);
+    wcsph_gradients(&s->pairs, &s->prm, p, s->velocity_for_viscosity, &s->scratch);
+    phase(s, PHASE_GRADIENTS, 0);
+    phase(s, PHASE_MOMENTUM, 1);
+    wcsph_rates(&s->pairs, &s->prm, p, s->velocity_for_viscosity, &s->scratch, drho_dt, dv_dt);
+    phase(s, PHASE_MOMENTUM, 0);
+    return 0;
+}
+
+int fluid_scheme_step(fluid_scheme *s, fluid_particles *p, double t, double dt,
+                      const fluid_step_hooks *hooks, char *msg, size_t msg_size)
+{
+    if (s->verlet)
+        return fluid_wc_verlet_step(&s->verlet_integrator, p, t, dt, hooks, msg, msg_size);
+    return fluid_wc_step(&s->predictor_corrector, p, t, dt, hooks, msg, msg_size);
+}
+
+void fluid_scheme_after_step(fluid_scheme *s, fluid_particles *p, long count)
+{
+    (void)s;
+    (void)p;
+    (void)count; /* delta-SPH diffuses the density in every evaluation: no filter */
+}
+
+double fluid_scheme_stable_dt(const fluid_scheme *s, const fluid_particles *p, double amax)
+{
+    return fluid_stable_step(&s->step, fluid_largest_speed(p), amax);
+}
+
+void fluid_scheme_pressure_gradient(const fluid_scheme *s, const fluid_particles *p,
+                                    double *grad)
+{
+    wcsph_gradient(&s->pairs, &s->prm, p, &s->scratch, p->pressure, grad);
+}
+
+void fluid_scheme_boundary_loads(const fluid_scheme *s, const fluid_particles *p,
+                                 double *force)
+{
+    wcsph_boundary_loads(&s->pairs, &s->prm, p, s->velocity_for_viscosity, &s->scratch, force);
+}
+
+int fluid_scheme_write_fields(const fluid_scheme *s, fsi_h5_writer *out)
+{
+    (void)s;
+    (void)out; /* no fields of its own */
+    return 0;
+}
+
+long long fluid_scheme_pair_count(const fluid_scheme *s)
+{
+    return (long long)s->pairs.pairs.n_pairs;
+}
