@@ -9,7 +9,7 @@
 static const fsi_key_spec keys[] = {
     {"smoothing_factor", FSI_KEY_REAL, "-", STR(WCSPH_H_OVER_DX), FSI_BOUND_MIN_OPEN, 0, 0,
      NULL, "Smoothing length over spacing, h / dx, of the Wendland C2 kernel (004 Eq. 5; "
-     "support 2h). 004 leaves it unstated; 1.7 is DualSPHysics' 2D h = 1.2 sqrt(2) dx "
+     "support 2h). 004 states 1.5 for its solid (§5.2) and leaves the fluid's unstated "
      "(docs/wcsph.md)."},
     {"artificial_viscosity", FSI_KEY_REAL, "-", STR(WCSPH_ARTIFICIAL_VISCOSITY),
      FSI_BOUND_MIN | FSI_BOUND_MAX, 0, 1, NULL,
@@ -30,10 +30,11 @@ static const fsi_key_spec keys[] = {
      "stress: the viscous stress tau = mu (grad v + grad v^T) of 004 Eqs. 3 and 7; "
      "laplacian: Morris et al. 1997's pairwise viscous term, which also damps a velocity "
      "alternating from one particle row to the next (docs/wcsph.md)."},
-    {"solid_coupling", FSI_KEY_CHOICE, "-", "contact", 0, 0, 0, "contact|dummy",
-     "How the fluid sees the solid's particles: contact, only the soft repulsive force of "
-     "004 Eqs. 21-24 (004 §4); dummy, as moving dummy wall particles (004 Eq. 10 with their "
-     "acceleration) plus the soft contact (docs/wcsph.md)."},
+    {"solid_coupling", FSI_KEY_CHOICE, "-", "dummy", 0, 0, 0, "dummy|contact",
+     "How the fluid sees the solid's particles: dummy, as moving dummy wall particles (004 "
+     "Eq. 10 with their acceleration) plus the soft contact; contact, only the soft "
+     "repulsive force of 004 Eqs. 21-24 (004 §4), which acts within one spacing and cannot "
+     "hold a deep column at rest (docs/wcsph.md, C4)."},
     {"solid_contact", FSI_KEY_REAL, "-", STR(WCSPH_SOLID_CONTACT), FSI_BOUND_MIN | FSI_BOUND_MAX,
      0, 1, NULL, "Coefficient k of the soft contact between a fluid particle and a solid "
      "particle closer than one spacing, k c0^2 (1 - r / dx) f(r / 0.75 h) / r (004 Eqs. "

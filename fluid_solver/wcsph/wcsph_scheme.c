@@ -122,7 +122,7 @@ fluid_scheme *fluid_scheme_create(const fsi_case *c, const char *role,
     prm->delta = fsi_case_get_real(c, role, "density_diffusion", WCSPH_DENSITY_DIFFUSION);
     prm->antuono = choice_is(c, role, "density_diffusion_form", "antuono");
     prm->laplacian = choice_is(c, role, "viscous_operator", "laplacian");
-    prm->solid_dummy = choice_is(c, role, "solid_coupling", "dummy");
+    prm->solid_dummy = !choice_is(c, role, "solid_coupling", "contact");
     prm->contact = fsi_case_get_real(c, role, "solid_contact", WCSPH_SOLID_CONTACT);
     prm->spacing = p->spacing;
     memcpy(prm->gravity, props->gravity, sizeof prm->gravity);
