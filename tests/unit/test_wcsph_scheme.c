@@ -8,7 +8,8 @@
  *  - the delta term (004 Eq. 6): zero for a uniform density everywhere; for the linear
  *    hydrostatic density field, Antuono et al.'s corrected form is zero (round-off) at
  *    every fluid particle whose renormalisation exists, Molteni's (004's) only in the
- *    interior (its error near the free surface is the known drift);
+ *    interior (its error near the free surface is the known drift); on random densities
+ *    both conserve mass and lower the density's spread (a flipped sign is caught);
  *  - momentum: sum_I m_I dv_I/dt = M g to round-off for random velocities and
  *    densities on a jittered block (pair terms antisymmetric), with either viscous
  *    operator and the quadratic artificial viscosity;
@@ -336,6 +337,33 @@ static void test_boundary_loads(void)
     }
 }
 
+/* The delta term diffuses: on a jittered block with random densities it conserves
+ * mass (sum V_I D_I = 0: the pair terms are antisymmetric in Molteni's form; Antuono's
+ * correction, (G_I + G_J) . x_IJ, is antisymmetric too) and lowers the density's
+ * spread (sum V_I rho_I D_I < 0). */
+static void test_delta_diffuses(void)
+{
+    for (int form = 0; form < 2; form++) {
+        scene s;
+        jittered_block(&s, 12, 0);
+        s.prm.antuono = form;
+        scene_rates(&s);
+        wcsph_density_diffusion(&s.pairs, &s.prm, &s.p, &s.scratch, s.extra);
+        double mass = 0.0, spread = 0.0, scale = 0.0;
+        for (int i = 0; i < s.p.n; i++) {
+            mass += s.p.volume[i] * s.extra[i];
+            spread += s.p.volume[i] * (s.p.density[i] - 1000.0) * s.extra[i];
+            scale += s.p.volume[i] * fabs(s.extra[i]);
+        }
+        printf("delta term (%s): sum V D = %.3g of sum V |D|, sum V (rho - rho0) D = %.4g\n",
+               form ? "antuono" : "molteni", mass / scale, spread);
+        CHECK(scale > 0.0 && fabs(mass) < 1e-12 * scale, "delta term does not conserve mass: %g",
+              mass / scale);
+        CHECK(spread < 0.0, "delta term does not diffuse: sum V rho D = %g", spread);
+        scene_free(&s);
+    }
+}
+
 static void test_uniform_velocity(void)
 {
     scene s;
@@ -361,6 +389,7 @@ int main(void)
 #endif
     test_momentum_conservation();
     test_boundary_loads();
+    test_delta_diffuses();
     test_uniform_velocity();
     return unit_check_report("test_wcsph_scheme");
 }
