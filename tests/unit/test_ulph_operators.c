@@ -32,6 +32,7 @@
 #include "ulph_operators.h"
 
 #include "unit_check.h"
+#include "unit_random.h"
 
 static const double PI = 3.14159265358979323846;
 static const double JITTER = 0.3;
@@ -42,11 +43,7 @@ static uint64_t rng_state;
 
 static double uniform(void)
 {
-    uint64_t z = (rng_state += 0x9E3779B97F4A7C15ULL);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
-    z ^= z >> 31;
-    return (double)(z >> 11) / 9007199254740992.0;
+    return unit_uniform(&rng_state);
 }
 
 /* A jittered lattice of spacing dx = 1/side: side points along every axis but the

@@ -34,16 +34,13 @@
 #include "ulph_walls.h"
 
 #include "unit_check.h"
+#include "unit_random.h"
 
 static uint64_t rng_state = 12345;
 
 static double uniform(void)
 {
-    uint64_t z = (rng_state += 0x9E3779B97F4A7C15ULL);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
-    z ^= z >> 31;
-    return (double)(z >> 11) / 9007199254740992.0;
+    return unit_uniform(&rng_state);
 }
 
 typedef struct {
