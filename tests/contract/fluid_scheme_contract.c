@@ -893,7 +893,7 @@ static fsi_case *read_case(const char *path)
 int main(int argc, char **argv)
 {
     (void)argc;
-    scheme_name = FSI_CONTRACT_SCHEME;
+    scheme_name = FSI_CONTRACT_NAME;
     the_case = read_case(argc > 1 ? argv[1] : NULL);
     if (!the_case) {
         fprintf(stderr, "cannot read the case of the %s contract\n", scheme_name);

@@ -30,7 +30,7 @@
 #include "unit_solid_lattice.h"
 
 static const double DX = 0.01, RHO = 1000.0, E = 1e6, NU = 0.25;
-static const char *model_name = FSI_CONTRACT_SCHEME;
+static const char *model_name = FSI_CONTRACT_NAME;
 static const char *settings_path;
 static uint64_t rng_state = 99;
 static double reach; /* how far a point's interactions reach [m], from their count */
