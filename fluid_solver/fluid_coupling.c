@@ -35,25 +35,32 @@ int fluid_coupling_receive(fluid_coupling *c, fsi_participant *part, fluid_parti
 {
     fsi_interface solid;
     fsi_read_interface(part, &solid);
-    if (solid.n > 0 && !solid.id) {
-        snprintf(msg, msg_size, "the solid sent %d interface particles without ids", solid.n);
+    return fluid_coupling_start_window(c, p, &solid, rho0, t0, msg, msg_size);
+}
+
+int fluid_coupling_start_window(fluid_coupling *c, fluid_particles *p,
+                                const fsi_interface *solid, double rho0, double t0,
+                                char *msg, size_t msg_size)
+{
+    if (solid->n > 0 && !solid->id) {
+        snprintf(msg, msg_size, "the solid sent %d interface particles without ids", solid->n);
         return -1;
     }
-    if (fluid_boundary_set(&c->boundary, p, &solid, rho0, msg, msg_size) != 0)
+    if (fluid_boundary_set(&c->boundary, p, solid, rho0, msg, msg_size) != 0)
         return -1;
     c->t_window = t0;
-    if (solid.n > c->impulse_capacity || !c->impulse) {
-        const size_t cap = fsi_grown_capacity((size_t)solid.n);
+    if (solid->n > c->impulse_capacity || !c->impulse) {
+        const size_t cap = fsi_grown_capacity((size_t)solid->n);
         int failed = 0;
         c->impulse = fsi_grow(c->impulse, cap * FSI_DIM * sizeof *c->impulse, &failed);
         if (failed) {
-            snprintf(msg, msg_size, "out of memory for the loads of %d particles", solid.n);
+            snprintf(msg, msg_size, "out of memory for the loads of %d particles", solid->n);
             return -1;
         }
         c->impulse_capacity = (int)cap;
     }
-    memset(c->impulse, 0, (size_t)solid.n * FSI_DIM * sizeof *c->impulse);
-    c->n_windows += solid.n > 0;
+    memset(c->impulse, 0, (size_t)solid->n * FSI_DIM * sizeof *c->impulse);
+    c->n_windows += solid->n > 0;
     return 0;
 }
 
@@ -82,12 +89,19 @@ static int boundary_forces(fluid_coupling *c, const fluid_scheme *scheme,
 int fluid_coupling_accumulate(fluid_coupling *c, const fluid_scheme *scheme,
                               const fluid_particles *p, double h)
 {
-    const fluid_boundary *b = &c->boundary;
-    if (b->n == 0)
+    if (c->boundary.n == 0)
         return 0;
     if (boundary_forces(c, scheme, p) != 0)
         return -1;
-    const double *f = c->force + (size_t)b->n_fixed * FSI_DIM;
+    fluid_coupling_add_loads(c, p, c->force, h);
+    return 0;
+}
+
+void fluid_coupling_add_loads(fluid_coupling *c, const fluid_particles *p,
+                              const double *force, double h)
+{
+    const fluid_boundary *b = &c->boundary;
+    const double *f = force + (size_t)b->n_fixed * FSI_DIM;
     const double *v = p->v + (size_t)b->n_fixed * FSI_DIM;
     double power = 0.0, power_at_sent = 0.0, total[FSI_DIM] = {0};
     for (int k = 0; k < b->n * FSI_DIM; k++) {
@@ -100,12 +114,28 @@ int fluid_coupling_accumulate(fluid_coupling *c, const fluid_scheme *scheme,
     c->work_at_sent += h * power_at_sent;
     for (int d = 0; d < FSI_DIM; d++)
         c->impulse_sent[d] += h * total[d];
-    return 0;
 }
 
 int fluid_coupling_publish(fluid_coupling *c, fsi_participant *part,
                            const fluid_scheme *scheme, const fluid_particles *p, double dt,
                            char *msg, size_t msg_size)
+{
+    const int m = c->boundary.n;
+    if ((m > 0 && !(dt > 0.0) && boundary_forces(c, scheme, p) != 0) ||
+        fluid_coupling_window_loads(c, p, dt) != 0) {
+        snprintf(msg, msg_size, "out of memory for the loads of %d particles", m);
+        return -1;
+    }
+    fsi_interface loads = {m, c->out_id, NULL, NULL, NULL, NULL, c->out_pressure, c->out_force,
+                           c->impedance};
+    if (fsi_write_interface(part, &loads) != 0) {
+        snprintf(msg, msg_size, "cannot publish the fluid loads (%d particles)", m);
+        return -1;
+    }
+    return 0;
+}
+
+int fluid_coupling_window_loads(fluid_coupling *c, const fluid_particles *p, double dt)
 {
     const fluid_boundary *b = &c->boundary;
     const int m = b->n;
@@ -115,17 +145,11 @@ int fluid_coupling_publish(fluid_coupling *c, fsi_participant *part,
         c->out_id = fsi_grow(c->out_id, cap * sizeof *c->out_id, &failed);
         c->out_force = fsi_grow(c->out_force, cap * FSI_DIM * sizeof *c->out_force, &failed);
         c->out_pressure = fsi_grow(c->out_pressure, cap * sizeof *c->out_pressure, &failed);
-        if (failed) {
-            snprintf(msg, msg_size, "out of memory for the loads of %d particles", m);
+        if (failed)
             return -1;
-        }
         c->out_capacity = (int)cap;
     }
     const int instant = !(dt > 0.0);
-    if (m > 0 && instant && boundary_forces(c, scheme, p) != 0) {
-        snprintf(msg, msg_size, "out of memory for the loads of %d particles", m);
-        return -1;
-    }
     for (int k = 0; k < m; k++) {
         const int i = b->n_fixed + k;
         c->out_id[k] = p->id[i];
@@ -133,12 +157,6 @@ int fluid_coupling_publish(fluid_coupling *c, fsi_participant *part,
         for (int d = 0; d < FSI_DIM; d++)
             c->out_force[k * FSI_DIM + d] = instant ? c->force[i * FSI_DIM + d]
                                                     : c->impulse[k * FSI_DIM + d] / dt;
-    }
-    fsi_interface loads = {m, c->out_id, NULL, NULL, NULL, NULL, c->out_pressure, c->out_force,
-                           c->impedance};
-    if (fsi_write_interface(part, &loads) != 0) {
-        snprintf(msg, msg_size, "cannot publish the fluid loads (%d particles)", m);
-        return -1;
     }
     return 0;
 }

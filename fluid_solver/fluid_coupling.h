@@ -58,6 +58,12 @@ void fluid_coupling_free(fluid_coupling *c);
 int fluid_coupling_receive(fluid_coupling *c, fsi_participant *part, fluid_particles *p,
                            double rho0, double t0, char *msg, size_t msg_size);
 
+/* fluid_coupling_receive without the bus: starts the window at t0 with the solid's
+ * state 'solid' (its particles into the tail of p, the impulse zeroed). */
+int fluid_coupling_start_window(fluid_coupling *c, fluid_particles *p,
+                                const fsi_interface *solid, double rho0, double t0,
+                                char *msg, size_t msg_size);
+
 /* The boundary particles at time t of the current window. */
 void fluid_coupling_move(const fluid_coupling *c, fluid_particles *p, double t);
 
@@ -65,6 +71,17 @@ void fluid_coupling_move(const fluid_coupling *c, fluid_particles *p, double t);
  * work the solid did on the fluid to work_on_fluid. 0, or -1 when memory runs out. */
 int fluid_coupling_accumulate(fluid_coupling *c, const fluid_scheme *scheme,
                               const fluid_particles *p, double h);
+
+/* fluid_coupling_accumulate's arithmetic, for the forces force[p->n * FSI_DIM] on every
+ * particle (the boundary tail is used) over a step of length h. */
+void fluid_coupling_add_loads(fluid_coupling *c, const fluid_particles *p,
+                              const double *force, double h);
+
+/* The loads fluid_coupling_publish sends, into out_id, out_pressure and out_force: the
+ * window's mean force impulse / dt on every boundary particle (dt > 0), else the
+ * forces of the last fluid_coupling_accumulate's evaluation (c->force). 0, or -1 when
+ * memory runs out. */
+int fluid_coupling_window_loads(fluid_coupling *c, const fluid_particles *p, double dt);
 
 /* End of a window of length dt: publishes its mean loads on every particle the solid
  * sent, in the order it sent them. 0, or -1 with msg. */

@@ -45,6 +45,12 @@ void ghost_walls_update(const fluid_pairs *pairs, const tait_eos *eos, const dou
                 v_mean[d] /= sum_w;
             }
             pressure /= sum_w;
+        } else {
+            /* No fluid to interpolate: the wall shows its own velocity, so that the
+             * viscous stress of a scheme that differentiates the walls' velocities
+             * (WCSPH's tau at a wall particle) sees a wall moving rigidly, not one at
+             * twice its speed (a uniform translation must change nothing). */
+            memcpy(v_mean, &p->v[s * FSI_DIM], sizeof v_mean);
         }
         p->pressure[s] = pressure = fmax(pressure, 0.0);
         p->density[s] = tait_eos_density(eos, pressure);

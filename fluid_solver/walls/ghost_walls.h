@@ -30,8 +30,8 @@
  * fluid's (no shear), the normal one is reversed, so the viscous and artificial
  * viscous terms still resist an approach (with v~_S alone nothing did and the F1 front
  * sank through the floor). A wall particle without fluid neighbours gets p = 0,
- * rho = rho0 and v~ = 0. For fluid particles velocity_for_viscosity is their
- * velocity. */
+ * rho = rho0 and v~ = v_S (its velocity_for_viscosity is then its own velocity). For
+ * fluid particles velocity_for_viscosity is their velocity. */
 void ghost_walls_update(const fluid_pairs *pairs, const tait_eos *eos, const double *gravity,
                        const unsigned char *free_slip, fluid_particles *p,
                        double *velocity_for_viscosity);

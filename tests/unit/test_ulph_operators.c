@@ -39,8 +39,6 @@ static const double PI = 3.14159265358979323846;
 static const double JITTER = 0.3;
 static const double VOLUME_NOISE = 0.2;
 
-/* splitmix64: a fixed-seed sequence of uniform numbers in [0, 1). */
-
 /* A jittered lattice of spacing dx = 1/side: side points along every axis but the
  * last, 'rows' along the last (side^DIM in the unit box when rows = side), plus
  * 'extra' zeroed slots at the end for the caller. Volumes dx^DIM times a random
