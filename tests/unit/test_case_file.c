@@ -73,7 +73,8 @@ static const fsi_key_table *const spring_tables[] = { &spring_table };
 static const fsi_key_table *const dashpot_tables[] = { &dashpot_table };
 
 /* A solid made of objects, its keys split over tables the way the real solid
- * solvers split them: keys of every solid, material keys, the model's own. */
+ * solvers split them: keys of every solid and material keys in [solid], the
+ * model's own in its solver section [solid.blocks]. */
 #if FSI_DIM == 2
 #define VEC_ZERO "0, 0"
 #define VEC_MAX "1, 0.2"
@@ -105,8 +106,36 @@ static const fsi_key_spec blocks_own_keys[] = {
 static const fsi_key_table blocks_own_table = { "blocks", "Keys of the block solid.",
                                                 blocks_own_keys, 1 };
 
-static const fsi_key_table *const blocks_tables[] = { &solid_common_table, &material_table,
-                                                      &blocks_own_table };
+static const fsi_key_table *const blocks_tables[] = { &solid_common_table, &material_table };
+
+/* Two fluid schemes with keys of their own in [fluid.waves] and [fluid.puffs] (one
+ * name in both: each section has its own table) and a common table in [fluid]. Only
+ * waves has a support radius. */
+static const fsi_key_spec fluid_common_keys[] = {
+    { "spacing", FSI_KEY_REAL, "m", "0.01", FSI_BOUND_MIN_OPEN, 0, 0, NULL, "Spacing." },
+};
+static const fsi_key_table fluid_common_table = { "fluid_common", "Keys of every scheme.",
+                                                  fluid_common_keys, 1 };
+static const fsi_key_table *const fluid_tables[] = { &fluid_common_table };
+
+static const fsi_key_spec waves_keys[] = {
+    { "smoothing", FSI_KEY_REAL, "-", "1.5", FSI_BOUND_MIN_OPEN, 0, 0, NULL, "h / dx." },
+    { "alpha", FSI_KEY_REAL, "-", "0.02", FSI_BOUND_MIN | FSI_BOUND_MAX, 0, 1, NULL,
+      "Artificial viscosity." },
+};
+static const fsi_key_table waves_table = { "waves", "Keys of the waves scheme.", waves_keys, 2 };
+
+static const fsi_key_spec puffs_keys[] = {
+    { "smoothing", FSI_KEY_REAL, "-", "2", FSI_BOUND_MIN_OPEN, 0, 0, NULL, "h / dx." },
+    { "delta", FSI_KEY_REAL, "-", "0.1", FSI_BOUND_MIN, 0, 0, NULL, "Density diffusion." },
+};
+static const fsi_key_table puffs_table = { "puffs", "Keys of the puffs scheme.", puffs_keys, 2 };
+
+static double waves_support(const fsi_case *c, const char *role)
+{
+    return 2.0 * fsi_case_get_real(c, fsi_case_solver_section(c, role), "smoothing", -1.0) *
+           fsi_case_get_real(c, role, "spacing", -1.0);
+}
 
 static const fsi_key_spec block_keys[] = {
     { "min", FSI_KEY_VECTOR, "m", NULL, 0, 0, 0, NULL, "Lower corner." },
@@ -165,18 +194,27 @@ static int check_blocks(const fsi_case *c, const char *role, FILE *errors)
 }
 
 static const fsi_solver_spec solvers[] = {
-    { "spring_oscillators", "solid", "fsi_spring_solid", "Particles on springs.", spring_tables,
-      1, NULL, 0, NULL },
-    { "linear_dashpot", "fluid", "fsi_dashpot_fluid", "A linear dashpot as fluid.",
-      dashpot_tables, 1, NULL, 0, NULL },
-    { "blocks", "solid", "fsi_blocks", "A solid of blocks, regions and probes.", blocks_tables, 3,
-      block_objects, 3, check_blocks },
+    { .name = "spring_oscillators", .role = "solid", .executable = "fsi_spring_solid",
+      .description = "Particles on springs.", .key_tables = spring_tables, .n_key_tables = 1 },
+    { .name = "linear_dashpot", .role = "fluid", .executable = "fsi_dashpot_fluid",
+      .description = "A linear dashpot as fluid.", .key_tables = dashpot_tables,
+      .n_key_tables = 1 },
+    { .name = "blocks", .role = "solid", .executable = "fsi_blocks",
+      .description = "A solid of blocks, regions and probes.", .key_tables = blocks_tables,
+      .n_key_tables = 2, .own_keys = &blocks_own_table, .objects = block_objects,
+      .n_objects = 3, .check = check_blocks },
+    { .name = "waves", .role = "fluid", .executable = "fsi_waves",
+      .description = "A particle fluid.", .key_tables = fluid_tables, .n_key_tables = 1,
+      .own_keys = &waves_table, .support = waves_support },
+    { .name = "puffs", .role = "fluid", .executable = "fsi_puffs",
+      .description = "Another particle fluid.", .key_tables = fluid_tables, .n_key_tables = 1,
+      .own_keys = &puffs_table },
 };
 
 static const char *const roles[] = { "fluid", "solid" };
 
 static const fsi_case_schema schema = {
-    sections, 2, &participant, roles, 2, solvers, 3,
+    sections, 2, &participant, roles, 2, solvers, 5,
 };
 
 /* ---------------------------------------------------------------- helpers */
@@ -528,7 +566,7 @@ static void test_solvers(void)
               "'spring_oscillators'?); solid solvers: spring_oscillators, blocks, external");
     EXPECT_AT(msgs, path, text, "solver = spring_oscillators",
               "[fluid] solver: 'spring_oscillators' is a solid solver, not a fluid solver "
-              "(fluid solvers: linear_dashpot, external)");
+              "(fluid solvers: linear_dashpot, waves, puffs, external)");
     fsi_case_free(c);
     free(msgs);
     free(path);
@@ -864,7 +902,9 @@ static void test_objects(void)
     const char *sel = fsi_case_get(c, "solid.region clamp", "select");
     CHECK(sel && strcmp(sel, "inside") == 0, "region default select");
     CHECK(fsi_case_get_real(c, "solid", "youngs_modulus", -1) == 1e9, "material table default");
-    CHECK(fsi_case_get_real(c, "solid", "horizon", -1) == 3.0, "own table default");
+    CHECK(fsi_case_get_real(c, "solid.blocks", "horizon", -1) == 3.0,
+          "own table default in the chosen solver's section");
+    CHECK(fsi_case_get(c, "solid", "horizon") == NULL, "own key in [solid]");
     CHECK(fsi_case_get_real(c, "solid", "time_step", -1) == 1e-4, "common table default");
     const char *any = fsi_case_get(c, "fluid.wall tank", "anything");
     CHECK(any && strcmp(any, "goes") == 0, "external object key passes through");
@@ -1106,7 +1146,8 @@ static const fsi_object_kind dup_objects[] = {
     { "block", "Second.", &region_table, 0 },
 };
 static const fsi_solver_spec dup_solvers[] = {
-    { "clash", "solid", "fsi_clash", "Bad.", dup_tables, 2, dup_objects, 2, NULL },
+    { .name = "clash", .role = "solid", .executable = "fsi_clash", .description = "Bad.",
+      .key_tables = dup_tables, .n_key_tables = 2, .objects = dup_objects, .n_objects = 2 },
 };
 static const fsi_case_schema dup_schema = { sections, 2, &participant, roles, 2, dup_solvers, 1 };
 
@@ -1222,9 +1263,11 @@ static void test_markdown_objects(void)
     char *md = read_all(f);
     static const char *const wanted[] = {
         "### solver = blocks (solid)",
-        "#### Keys: solid_common\n\nKeys of every solid.\n\n| key |",
-        "#### Keys: materials\n\nMaterial keys.\n\n| key |",
-        "#### Keys: blocks\n",
+        "#### Keys in [solid]: solid_common\n\nKeys of every solid.\n\n| key |",
+        "#### Keys in [solid]: materials\n\nMaterial keys.\n\n| key |",
+        "#### [solid.blocks]: the keys of solver blocks\n\nKeys of the block solid.\n\n| key |",
+        "#### [fluid.waves]: the keys of solver waves\n",
+        "Derived: `[fluid] support` (m)",
         "#### [solid.block NAME] sections (at least one)\n\nParticles filling a box.\n\n| key |",
         "#### [solid.region NAME] sections (any number)\n\nParticles selected by a box.\n",
         "| `select` | choice | - | `inside` | inside, outside |",
@@ -1233,8 +1276,10 @@ static void test_markdown_objects(void)
     };
     for (size_t i = 0; i < sizeof wanted / sizeof wanted[0]; i++)
         CHECK(strstr(md, wanted[i]) != NULL, "markdown lacks '%s'", wanted[i]);
-    CHECK(strstr(md, "#### [solid.block NAME]") > strstr(md, "#### Keys: blocks"),
+    CHECK(strstr(md, "#### [solid.block NAME]") > strstr(md, "#### [solid.blocks]"),
           "object kinds come after the solver's key tables");
+    CHECK(count_occurrences(md, "Derived: `[fluid] support`") == 1,
+          "only the solver with a support radius derives one");
     free(md);
 }
 
