@@ -42,9 +42,11 @@ youngs_modulus = 30e6
 poisson_ratio = 0.25
 plane = strain
 $2
-critical_stretch = 0.069
 gravity = 0, -9.81
 time_step_safety = 0.4
+
+[solid.nosbpd]
+critical_stretch = 0.069
 
 [solid.block plate]
 min = 0.292, 0
@@ -84,7 +86,8 @@ run() { # name case [--set ...]
   printf '%-28s exit %d  %s\n' "$name" "$rc" "$line"
   grep -h "error:" "$OUT/$name/solid.log" | sed 's/^/    /' || true
 }
-run elastic_failure "$OUT/elastic.ini" --set solid.failure=true
-run dp_no_failure "$OUT/dp.ini" --set solid.failure=false
-run dp_failure "$OUT/dp.ini" --set solid.failure=true
-run dp_failure_order1 "$OUT/dp.ini" --set solid.failure=true --set solid.gradient_order=1
+run elastic_failure "$OUT/elastic.ini" --set solid.nosbpd.failure=true
+run dp_no_failure "$OUT/dp.ini" --set solid.nosbpd.failure=false
+run dp_failure "$OUT/dp.ini" --set solid.nosbpd.failure=true
+run dp_failure_order1 "$OUT/dp.ini" --set solid.nosbpd.failure=true \
+  --set solid.nosbpd.gradient_order=1

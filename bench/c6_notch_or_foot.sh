@@ -44,9 +44,11 @@ density = 2500
 youngs_modulus = 1e6
 poisson_ratio = 0
 plane = strain
+damping = 100
+
+[solid.nosbpd]
 failure = true
 critical_stretch = 0.05
-damping = 100
 
 [solid.block obstacle]
 min = 0.3, 0

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # C6 water impact on a notched brittle obstacle (docs/benchmarks.md C6,
 # docs/validation.md C6): cases/c6_notched_obstacle.ini with bond failure, the same
-# run with --set solid.failure=false, and the run with failure but without the case's
+# run with --set solid.nosbpd.failure=false, and the run with failure but without the case's
 # no-failure zone at the foot (the case with its [solid.region foot_no_failure]
 # section left out: docs/nosbpd.md, "No-failure zones"), one thread each; then the
 # crack initiation time and place and the damage snapshots at 004 Fig. 14's times

@@ -6,7 +6,7 @@
 #     sets OUT (default out/bench/NAME), LIST, RESUME (0 run, 1 keep finished runs,
 #     2 run nothing), THREADS (default 2), EXTRA (the --set options) and log().
 #   sweep_run_failure_pair CASE
-#     runs CASE as OUT/failure and with solid.failure=false as OUT/no_failure, together.
+#     runs CASE as OUT/failure and with solid.nosbpd.failure=false as OUT/no_failure, together.
 #   sweep_run DIR fsi-run-arguments...
 #     runs DIR (log DIR.txt) unless RESUME keeps it; a failed run is logged, not fatal:
 #     what it wrote is still compared.
@@ -56,10 +56,10 @@ sweep_run() {
 }
 
 # A fracture scene's two runs side by side: OUT/failure (the case) and OUT/no_failure
-# (--set solid.failure=false), one thread each.
+# (--set solid.nosbpd.failure=false), one thread each.
 sweep_run_failure_pair() {
   sweep_run "$OUT/failure" "$1" &
-  sweep_run "$OUT/no_failure" "$1" --set solid.failure=false &
+  sweep_run "$OUT/no_failure" "$1" --set solid.nosbpd.failure=false &
   wait
 }
 

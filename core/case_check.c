@@ -9,7 +9,7 @@
 const char *fsi_case_where(const fsi_case *c, const char *section, const char *key)
 {
     const char *o = key ? fsi_case_origin(c, section, key) : NULL;
-    if (!o || strcmp(o, "default") == 0)
+    if (!o || strcmp(o, "default") == 0 || strcmp(o, "derived") == 0)
         o = fsi_case_origin(c, section, NULL);
     return o ? o : fsi_case_path(c);
 }

@@ -15,7 +15,7 @@ typedef struct {
 } fsi_case_checker;
 
 /* Where a problem is: the key's own "FILE:LINE" (or --set), or the section's header
- * when the key was defaulted or is absent (key may be NULL). */
+ * when the key was defaulted or derived or is absent (key may be NULL). */
 const char *fsi_case_where(const fsi_case *c, const char *section, const char *key);
 
 /* Writes "WHERE: [section] key: message" (without " key" when key is NULL) and counts

@@ -139,10 +139,13 @@ void fsi_case_format_number(double x, char *buf, size_t size)
         snprintf(buf, size, "%.17g", x);
 }
 
-/* A list of names for "known: ..." lists and "did you mean" suggestions. */
+/* A list of names for "known: ..." lists and "did you mean" suggestions; the
+ * names made by names_add_text belong to it. */
 typedef struct {
     const char **items;
     int n, cap;
+    char **owned;
+    int n_owned, cap_owned;
 } name_list;
 
 static void names_add(name_list *l, const char *name)
@@ -152,6 +155,19 @@ static void names_add(name_list *l, const char *name)
             return;
     l->items = grow(l->items, l->n, &l->cap, sizeof *l->items);
     l->items[l->n++] = name;
+}
+
+static void names_add_text(name_list *l, const char *fmt, ...)
+    __attribute__((format(printf, 2, 3)));
+static void names_add_text(name_list *l, const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    char *text = xvasprintf(fmt, ap);
+    va_end(ap);
+    l->owned = grow(l->owned, l->n_owned, &l->cap_owned, sizeof *l->owned);
+    l->owned[l->n_owned++] = text;
+    names_add(l, text);
 }
 
 static char *names_join(const name_list *l, const char *sep)
@@ -172,8 +188,10 @@ static char *names_join(const name_list *l, const char *sep)
 static void names_free(name_list *l)
 {
     free(l->items);
-    l->items = NULL;
-    l->n = l->cap = 0;
+    for (int i = 0; i < l->n_owned; i++)
+        free(l->owned[i]);
+    free(l->owned);
+    *l = (name_list){ 0 };
 }
 
 static size_t levenshtein(const char *a, const char *b)
@@ -241,7 +259,8 @@ static const char *closest_name(const char *typed, const name_list *known)
 
 /* ------------------------------------------------------------------ model */
 
-typedef enum { FROM_FILE, FROM_SET, FROM_DEFAULT } origin_kind;
+/* FROM_DERIVED: a value validation computed from others (FSI_CASE_SUPPORT_KEY). */
+typedef enum { FROM_FILE, FROM_SET, FROM_DEFAULT, FROM_DERIVED } origin_kind;
 
 /* Where a value or section came from, for messages and the resolved file. */
 typedef struct {
@@ -270,6 +289,10 @@ struct fsi_case {
     section **sections;
     int n_sections, cap_sections;
     int n_overrides;
+    /* The names fsi_case_solver_section returned ("fluid.ulph"), kept so that they
+     * stay valid as long as the case whether or not the section exists. */
+    char **solver_sections;
+    int n_solver_sections, cap_solver_sections;
 };
 
 static origin origin_copy(const origin *o)
@@ -288,6 +311,7 @@ static char *origin_text(const fsi_case *c, const origin *o, const char *default
     case FROM_SET:
         return xasprintf("--set %s", o->set_text);
     case FROM_DEFAULT:
+    case FROM_DERIVED:
         break;
     }
     return xstrdup(default_text);
@@ -296,11 +320,15 @@ static char *origin_text(const fsi_case *c, const origin *o, const char *default
 /* What fsi_case_origin() says about a value or section from 'o'. */
 static char *origin_label(const fsi_case *c, const origin *o)
 {
-    return origin_text(c, o, "default");
+    return origin_text(c, o, o->kind == FROM_DERIVED ? "derived" : "default");
 }
 
+/* NULL 'name' finds nothing, so the getters return their fallback for the section
+ * of a participant without a solver (fsi_case_solver_section). */
 static section *find_section(const fsi_case *c, const char *name)
 {
+    if (!name)
+        return NULL;
     for (int i = 0; i < c->n_sections; i++)
         if (strcmp(c->sections[i]->name, name) == 0)
             return c->sections[i];
@@ -361,6 +389,9 @@ void fsi_case_free(fsi_case *c)
         free(s);
     }
     free(c->sections);
+    for (int i = 0; i < c->n_solver_sections; i++)
+        free(c->solver_sections[i]);
+    free(c->solver_sections);
     free(c->path);
     free(c);
 }
@@ -479,21 +510,31 @@ typedef struct {
     section *current;   /* NULL before the first section */
     int skip_keys;      /* after a rejected [section] line: its keys belong nowhere */
     int resolved;       /* the file is one fsi_case_write_resolved wrote */
-    int line_is_default;    /* resolved file: the current key line ends in "; # default" */
+    origin_kind line_kind;  /* resolved file: FROM_DEFAULT or FROM_DERIVED when the
+                             * current key line ends in "; # default" or "; # derived" */
 } read_state;
 
 /* The first line of every file fsi_case_write_resolved writes. */
 static const char resolved_marker[] = "# Resolved case read from ";
 static const char default_label[] = "; # default";
+static const char derived_label[] = "; # derived";
 
-/* In a resolved file a defaulted key keeps its origin, so that a participant
- * reading it can still tell a key the user gave from one it may ignore. */
-static int ends_with_default_label(const char *text)
+static int ends_with(const char *text, const char *label)
 {
-    size_t n = strlen(text), m = strlen(default_label);
+    size_t n = strlen(text), m = strlen(label);
     while (n > 0 && isspace((unsigned char)text[n - 1]))
         n--;
-    return n >= m && strncmp(text + n - m, default_label, m) == 0;
+    return n >= m && strncmp(text + n - m, label, m) == 0;
+}
+
+/* In a resolved file a defaulted or derived key keeps its origin, so that a
+ * participant reading it can still tell a key the user gave from one it may ignore,
+ * and validating it again derives the value anew instead of refusing it. */
+static origin_kind resolved_line_kind(const char *text)
+{
+    return ends_with(text, default_label)   ? FROM_DEFAULT
+           : ends_with(text, derived_label) ? FROM_DERIVED
+                                            : FROM_FILE;
 }
 
 static void line_error(read_state *st, int line, const char *fmt, ...)
@@ -614,7 +655,7 @@ static char *case_reader(char *str, int num, void *stream)
     }
     memcpy(str, text, strlen(text) + 1);
     st->pending = 1;
-    st->line_is_default = st->resolved && ends_with_default_label(text);
+    st->line_kind = st->resolved ? resolved_line_kind(text) : FROM_FILE;
     return str;
 }
 
@@ -623,9 +664,7 @@ static int on_key(void *user, const char *inih_section, const char *name, const 
     read_state *st = user;
     (void)inih_section;     /* cut at 50 bytes by inih; the reader tracks sections */
     st->pending = 0;
-    origin here = { FROM_FILE, st->lineno, NULL };
-    if (st->line_is_default)
-        here.kind = FROM_DEFAULT;
+    origin here = { st->line_kind, st->lineno, NULL };
     if (!value) {           /* only if a program turned on ini_allow_no_value */
         line_error(st, st->lineno, "%s", syntax_message);
         return 1;
@@ -657,6 +696,8 @@ static fsi_case *case_new(const char *path)
     c->sections = NULL;
     c->n_sections = c->cap_sections = 0;
     c->n_overrides = 0;
+    c->solver_sections = NULL;
+    c->n_solver_sections = c->cap_solver_sections = 0;
     return c;
 }
 
@@ -1015,11 +1056,18 @@ static char *value_problem(const fsi_key_spec *k, const char *text)
 typedef struct {
     const fsi_key_table **tables;
     int n_tables, cap_tables;
-    const char *skip[3];        /* NULL-terminated: keys the caller checks itself */
+    const char *skip[4];        /* NULL-terminated: keys the caller checks itself */
     int report_unknown;         /* 0 for external solvers (pass-through) */
     const char *unknown_hint;   /* e.g. " with solver spring_oscillators" */
     name_list suggested;        /* keys offered as "did you mean" */
+    /* For a participant section or a solver section: where an unknown key belongs
+     * when another section of the role defines it (key_home). */
+    const fsi_case_schema *schema;
+    const char *role;
+    const fsi_solver_spec *section_solver;  /* the solver of a solver section, else NULL */
 } key_scope;
+
+static char *key_home(const key_scope *sc, const char *key);
 
 static void scope_add(key_scope *sc, const fsi_key_table *t)
 {
@@ -1057,9 +1105,16 @@ static const fsi_key_spec *scope_find(const key_scope *sc, const char *key)
 static void report_unknown_key(diag_list *d, const fsi_case *c, const section *s,
                                const entry *e, key_scope *sc)
 {
+    char *home = key_home(sc, e->key);
+    if (home) {
+        report(d, c, &e->from, s->name, e->key, "%s", home);
+        free(home);
+        return;
+    }
     name_list known = { 0 };
     for (int i = 0; sc->skip[i]; i++)
-        names_add(&known, sc->skip[i]);
+        if (strcmp(sc->skip[i], FSI_CASE_SUPPORT_KEY) != 0)     /* never to be written */
+            names_add(&known, sc->skip[i]);
     for (int t = 0; t < sc->n_tables; t++)
         for (int i = 0; i < sc->tables[t]->n_keys; i++)
             names_add(&known, sc->tables[t]->keys[i].key);
@@ -1218,6 +1273,81 @@ static void report_bad_solver(diag_list *d, const fsi_case *c, const section *s,
     names_free(&known);
 }
 
+/* The solver of role 'role' called 'name', or NULL. */
+static const fsi_solver_spec *find_role_solver(const fsi_case_schema *schema, const char *role,
+                                               const char *name)
+{
+    const fsi_solver_spec *sv = find_solver(schema, name);
+    return sv && strcmp(sv->role, role) == 0 ? sv : NULL;
+}
+
+static int table_has(const fsi_key_table *t, const char *key)
+{
+    for (int i = 0; t && i < t->n_keys; i++)
+        if (strcmp(t->keys[i].key, key) == 0)
+            return 1;
+    return 0;
+}
+
+/* True when 'key' is written in [ROLE] for solver sv: a common key or one of its
+ * key_tables. */
+static int participant_has(const fsi_case_schema *schema, const fsi_solver_spec *sv,
+                           const char *key)
+{
+    if (table_has(schema->participant, key))
+        return 1;
+    for (int i = 0; i < sv->n_key_tables; i++)
+        if (table_has(sv->key_tables[i], key))
+            return 1;
+    return 0;
+}
+
+/* Where a key that is unknown in the section of scope sc belongs, when another
+ * section of the role defines it: "a key of solver ulph; write it in [fluid.ulph]"
+ * for a solver's own key in [fluid] or in another solver's section, "a key of
+ * [fluid]; write it there" for a participant key in a solver section. NULL when no
+ * section of the role knows it. Each key has one place (fsi_case_schema_check). */
+static char *key_home(const key_scope *sc, const char *key)
+{
+    if (!sc->schema)
+        return NULL;
+    if (sc->section_solver && participant_has(sc->schema, sc->section_solver, key))
+        return xasprintf("a key of [%s], not of its solver section; write it there", sc->role);
+    name_list owners = { 0 }, places = { 0 };
+    for (int i = 0; i < sc->schema->n_solvers; i++) {
+        const fsi_solver_spec *sv = &sc->schema->solvers[i];
+        if (strcmp(sv->role, sc->role) != 0 || sv == sc->section_solver ||
+            !table_has(sv->own_keys, key))
+            continue;
+        names_add(&owners, sv->name);
+        names_add_text(&places, "[%s.%s]", sv->role, sv->name);
+    }
+    char *home = NULL;
+    if (owners.n > 0) {
+        char *who = names_join(&owners, ", ");
+        char *where = names_join(&places, " or ");
+        home = xasprintf("a key of solver%s %s; write it in %s", owners.n > 1 ? "s" : "", who,
+                         where);
+        free(who);
+        free(where);
+    }
+    names_free(&owners);
+    names_free(&places);
+    return home;
+}
+
+/* FSI_CASE_SUPPORT_KEY is derived (fsi_case_validate): a value the user wrote is
+ * refused rather than silently replaced. One read back from a resolved file
+ * (origin derived) is derived anew. */
+static void refuse_derived(diag_list *d, const fsi_case *c, const section *s)
+{
+    const entry *e = find_entry(s, FSI_CASE_SUPPORT_KEY);
+    if (e && (e->from.kind == FROM_FILE || e->from.kind == FROM_SET))
+        report(d, c, &e->from, s->name, e->key,
+               "a derived value, not a setting: validation writes the fluid solver's support "
+               "radius (from its own keys and spacing) into the resolved case; remove it");
+}
+
 /* 'solver = external' runs a program of the user's: it must be named. */
 static void check_external(diag_list *d, const fsi_case *c, const section *s)
 {
@@ -1233,8 +1363,10 @@ static void check_external(diag_list *d, const fsi_case *c, const section *s)
 static void validate_participant(diag_list *d, const fsi_case *c, section *s,
                                  const fsi_case_schema *schema)
 {
-    key_scope sc = { .skip = { "solver", NULL, NULL }, .report_unknown = 1 };
+    key_scope sc = { .skip = { "solver", FSI_CASE_SUPPORT_KEY, NULL, NULL },
+                     .report_unknown = 1, .schema = schema, .role = s->name };
     scope_add(&sc, schema->participant);
+    refuse_derived(d, c, s);
     const entry *solver = find_entry(s, "solver");
     char *hint = NULL;
     if (!solver) {
@@ -1244,7 +1376,7 @@ static void validate_participant(diag_list *d, const fsi_case *c, section *s,
         report(d, c, &solver->from, s->name, "solver", "value is empty");
         sc.report_unknown = 0;
     } else if (strcmp(solver->value, "external") == 0) {
-        sc.skip[1] = "executable";
+        sc.skip[2] = "executable";
         sc.report_unknown = 0;
         check_external(d, c, s);
     } else {
@@ -1373,6 +1505,50 @@ static void check_object_keys(diag_list *d, const fsi_case *c, section *s,
     free(hint);
 }
 
+/* [ROLE.WORD] without a name where WORD is no solver of the role, nor an object
+ * kind of the chosen solver 'spec' (NULL when none is chosen): the error names both
+ * lists. */
+static void report_unknown_solver_section(diag_list *d, const fsi_case *c, const section *s,
+                                          const fsi_case_schema *schema,
+                                          const object_header *h, const fsi_solver_spec *spec)
+{
+    name_list solvers = { 0 }, known = { 0 };
+    for (int i = 0; i < schema->n_solvers; i++) {
+        const fsi_solver_spec *sv = &schema->solvers[i];
+        if (strcmp(sv->role, h->role) != 0)
+            continue;
+        names_add(&known, sv->name);
+        names_add_text(&solvers, "[%s.%s]", h->role, sv->name);
+    }
+    char *kinds = NULL;
+    if (spec) {
+        name_list objects = { 0 };
+        for (int i = 0; i < spec->n_objects; i++) {
+            names_add(&known, spec->objects[i].kind);
+            names_add_text(&objects, "[%s.%s NAME]", h->role, spec->objects[i].kind);
+        }
+        char *list = names_join(&objects, ", ");
+        kinds = objects.n > 0 ? xasprintf(" nor an object kind of solver %s (object sections: "
+                                          "%s)", spec->name, list)
+                              : xasprintf(", and solver %s takes no object sections", spec->name);
+        free(list);
+        names_free(&objects);
+    } else {
+        kinds = xasprintf("; object sections are written [%s.KIND NAME]", h->role);
+    }
+    const char *guess = closest_name(h->kind, &known);
+    char *hint = guess ? xasprintf(" (did you mean '%s'?)", guess) : xstrdup("");
+    char *list = names_join(&solvers, ", ");
+    const int neither = spec && spec->n_objects > 0;
+    report(d, c, &s->from, s->name, NULL, "unknown section: '%s'%s is %s %s solver (solver "
+           "sections: %s)%s", h->kind, hint, neither ? "neither a" : "no", h->role, list, kinds);
+    free(list);
+    free(hint);
+    free(kinds);
+    names_free(&solvers);
+    names_free(&known);
+}
+
 /* An object section [ROLE.KIND NAME] (the name's first word holds a '.'). Its
  * keys are checked only when its participant runs a solver of the schema:
  * external programs get theirs unchecked, and when the participant's solver is
@@ -1390,9 +1566,14 @@ static void validate_object(diag_list *d, const fsi_case *c, section *s,
                "object kind missing (object sections are written [%s.KIND NAME])", h->role);
         return;
     }
-    int named = check_object_name(d, c, s, h);
     const fsi_solver_spec *spec;
-    switch (role_solver(c, schema, h->role, &spec)) {
+    const role_state state = role_solver(c, schema, h->role, &spec);
+    if (!*h->name && !(state == ROLE_SOLVER && find_kind(spec, h->kind))) {
+        report_unknown_solver_section(d, c, s, schema, h, state == ROLE_SOLVER ? spec : NULL);
+        return;
+    }
+    int named = check_object_name(d, c, s, h);
+    switch (state) {
     case ROLE_ABSENT:
         report(d, c, &s->from, s->name, NULL, "no [%s] section (the participant this object "
                "belongs to)", h->role);
@@ -1556,13 +1737,27 @@ static void check_solver(diag_list *d, const fsi_case_schema *schema, int index)
         schema_flaw(d, "%s: the name 'external' is reserved", owner);
     if (role_index(schema, sv->role) < 0)
         schema_flaw(d, "%s: role '%s' is not a participant section", owner, sv->role);
-    /* The participant section holds the common keys and all of the solver's. */
-    const fsi_key_table **tables = xrealloc(NULL, (size_t)(sv->n_key_tables + 1) * sizeof *tables);
+    /* The participant section holds the common keys and the solver's key_tables, its
+     * solver section its own keys: one place per key, so none may repeat across them. */
+    const int n = sv->n_key_tables + 2;
+    const fsi_key_table **tables = xrealloc(NULL, (size_t)n * sizeof *tables);
     tables[0] = schema->participant;
     for (int i = 0; i < sv->n_key_tables; i++)
         tables[i + 1] = sv->key_tables[i];
-    check_key_set(d, owner, tables, sv->n_key_tables + 1);
+    tables[n - 1] = sv->own_keys;
+    check_key_set(d, owner, tables, n);
+    for (int i = 0; i < n; i++)
+        if (table_has(tables[i], FSI_CASE_SUPPORT_KEY))
+            schema_flaw(d, "%s: table '%s' defines '%s', which validation derives", owner,
+                        tables[i]->name, FSI_CASE_SUPPORT_KEY);
     free(tables);
+    /* [ROLE.NAME] is a solver section, [ROLE.KIND NAME] an object: one word may not
+     * be both for a role. */
+    for (int j = 0; j < schema->n_solvers; j++)
+        if (strcmp(schema->solvers[j].role, sv->role) == 0 &&
+            find_kind(&schema->solvers[j], sv->name))
+            schema_flaw(d, "%s: solver %s of role %s has an object kind of this name", owner,
+                        schema->solvers[j].name, sv->role);
     free(owner);
     check_solver_objects(d, sv);
 }
@@ -1635,6 +1830,104 @@ static int run_solver_checks(const fsi_case *c, const fsi_case_schema *schema,
     return n;
 }
 
+/* A solver section [ROLE.SOLVER]: checked against the solver's own keys and given
+ * its defaults whether the solver is chosen or not, so that a case can carry the
+ * settings of several solvers and a typo in any of them is still an error. */
+static void validate_solver_section(diag_list *d, const fsi_case *c, section *s,
+                                    const fsi_case_schema *schema, const fsi_solver_spec *sv)
+{
+    if (!sv->own_keys) {
+        report(d, c, &s->from, s->name, NULL, "solver %s has no solver section: its keys are "
+               "written in [%s]", sv->name, sv->role);
+        return;
+    }
+    key_scope sc = { .report_unknown = 1, .schema = schema, .role = sv->role,
+                     .section_solver = sv };
+    scope_add(&sc, sv->own_keys);
+    char *hint = xasprintf(" of solver %s", sv->name);
+    sc.unknown_hint = hint;
+    check_section(d, c, s, &sc);
+    free(hint);
+}
+
+/* The chosen solver's section exists after validation, with its defaults when the
+ * case has none, so that the resolved case shows every value in effect. It goes
+ * right after its participant section. */
+static void add_chosen_solver_sections(diag_list *d, fsi_case *c, const fsi_case_schema *schema)
+{
+    static const origin by_default = { FROM_DEFAULT, 0, NULL };
+    for (int r = 0; r < schema->n_roles; r++) {
+        const fsi_solver_spec *spec;
+        if (role_solver(c, schema, schema->roles[r], &spec) != ROLE_SOLVER || !spec->own_keys)
+            continue;
+        const char *name = fsi_case_solver_section(c, schema->roles[r]);
+        if (find_section(c, name))
+            continue;
+        section *s = add_section(c, name, &by_default);
+        int at = 0;
+        while (strcmp(c->sections[at]->name, schema->roles[r]) != 0)
+            at++;
+        memmove(&c->sections[at + 2], &c->sections[at + 1],
+                (size_t)(c->n_sections - at - 2) * sizeof *c->sections);
+        c->sections[at + 1] = s;
+        key_scope sc = { .report_unknown = 0 };
+        scope_add(&sc, spec->own_keys);
+        fill_defaults(d, c, s, &sc);
+        scope_free(&sc);
+    }
+}
+
+static void remove_entry(section *s, const char *key)
+{
+    for (int i = 0; i < s->n_entries; i++) {
+        entry *e = s->entries[i];
+        if (strcmp(e->key, key) != 0)
+            continue;
+        free(e->key);
+        free(e->value);
+        free(e->from.set_text);
+        free(e->label);
+        free(e);
+        memmove(&s->entries[i], &s->entries[i + 1],
+                (size_t)(s->n_entries - i - 1) * sizeof *s->entries);
+        s->n_entries--;
+        return;
+    }
+}
+
+/* Writes each support radius into [ROLE] FSI_CASE_SUPPORT_KEY for the participants
+ * whose sections passed (role_errors[r] == 0) and whose solver has one, so that the
+ * semantic checks and the other participant read it without knowing the solver. A
+ * derived value left from a resolved file for a solver without one is removed. */
+static void derive_supports(diag_list *d, fsi_case *c, const fsi_case_schema *schema,
+                            int *role_errors)
+{
+    static const origin derived = { FROM_DERIVED, 0, NULL };
+    for (int r = 0; r < schema->n_roles; r++) {
+        section *s = find_section(c, schema->roles[r]);
+        const entry *old = s ? find_entry(s, FSI_CASE_SUPPORT_KEY) : NULL;
+        if (old && (old->from.kind == FROM_FILE || old->from.kind == FROM_SET))
+            continue;   /* refused (refuse_derived) */
+        const fsi_solver_spec *spec;
+        if (role_errors[r] || role_solver(c, schema, schema->roles[r], &spec) != ROLE_SOLVER ||
+            !spec->support) {
+            if (old)
+                remove_entry(s, FSI_CASE_SUPPORT_KEY);
+            continue;
+        }
+        const double support = spec->support(c, schema->roles[r]);
+        if (!(support >= 0.0) || !isfinite(support)) {
+            report(d, c, &s->from, s->name, FSI_CASE_SUPPORT_KEY, "internal error: solver %s "
+                   "derives a support radius of %g m from valid keys", spec->name, support);
+            role_errors[r]++;
+            continue;
+        }
+        char text[40];
+        fsi_case_format_number(support, text, sizeof text);
+        set_value(c, s->name, FSI_CASE_SUPPORT_KEY, text, &derived);
+    }
+}
+
 /* Checks one section the file (or --set) gave; returns the index of the role it
  * belongs to (a participant section or one of its objects), or -1. */
 static int validate_section(diag_list *d, const fsi_case *c, section *s,
@@ -1650,7 +1943,14 @@ static int validate_section(diag_list *d, const fsi_case *c, section *s,
     } else if (role >= 0) {
         validate_participant(d, c, s, schema);
     } else if (split_object_header(s->name, &h)) {
-        validate_object(d, c, s, schema, &h);
+        const fsi_solver_spec *sv = find_role_solver(schema, h.role, h.kind);
+        if (sv && !*h.name)
+            validate_solver_section(d, c, s, schema, sv);
+        else if (sv)
+            report(d, c, &s->from, s->name, NULL, "a solver section has no name: write [%s.%s]",
+                   h.role, h.kind);
+        else
+            validate_object(d, c, s, schema, &h);
         role = role_index(schema, h.role);
         free_object_header(&h);
     } else {
@@ -1682,6 +1982,8 @@ int fsi_case_validate(fsi_case *c, const fsi_case_schema *schema, FILE *errors)
         role_errors[r] += diags.n - before;
     }
     add_absent_sections(&diags, c, schema);
+    add_chosen_solver_sections(&diags, c, schema);
+    derive_supports(&diags, c, schema, role_errors);
     int n = diag_flush(&diags, errors);
     n += run_solver_checks(c, schema, role_errors, errors);
     free(role_errors);
@@ -1736,6 +2038,31 @@ const char *fsi_case_origin(const fsi_case *c, const char *section_name, const c
 }
 
 /* ---------------------------------------------------------------- getters */
+
+const char *fsi_case_solver_section(const fsi_case *c, const char *role)
+{
+    const char *solver = role ? fsi_case_get(c, role, "solver") : NULL;
+    if (!solver || !*solver || strcmp(solver, "external") == 0)
+        return NULL;
+    char *name = xasprintf("%s.%s", role, solver);
+    const section *s = find_section(c, name);
+    const char *found = s ? s->name : NULL;
+    for (int i = 0; !found && i < c->n_solver_sections; i++)
+        if (strcmp(c->solver_sections[i], name) == 0)
+            found = c->solver_sections[i];
+    if (found) {
+        free(name);
+        return found;
+    }
+    /* An unvalidated case may lack the section; the name is kept with the case.
+     * Every case is made by case_new, never const itself: this is a cache that
+     * changes no content. */
+    fsi_case *cache = (fsi_case *)c;
+    cache->solver_sections = grow(cache->solver_sections, cache->n_solver_sections,
+                                  &cache->cap_solver_sections, sizeof *cache->solver_sections);
+    cache->solver_sections[cache->n_solver_sections++] = name;
+    return name;
+}
 
 int fsi_case_has_section(const fsi_case *c, const char *section_name)
 {

@@ -58,6 +58,10 @@ typedef struct {
     int min_count;              /* fewer objects of this kind is an error */
 } fsi_object_kind;
 
+/* The key a fluid solver's support radius is resolved into, in its participant
+ * section (fsi_solver_spec.support): derived, never written by the user. */
+#define FSI_CASE_SUPPORT_KEY "support"
+
 /* A solver that can fill a participant section ([fluid] or [solid]):
  * 'solver = name' selects it and makes its keys valid in that section. */
 typedef struct {
@@ -65,11 +69,24 @@ typedef struct {
     const char *role;           /* the section it may appear in: "fluid" or "solid" */
     const char *executable;     /* program in the build's bin directory */
     const char *description;
-    /* The keys of the participant section besides the common ones, in several
-     * tables (e.g. keys every solid model has, material keys, the model's own);
-     * a key may be defined in only one of them. */
+    /* The keys of the participant section [ROLE] besides the common ones, in several
+     * tables (e.g. keys every solid model has, material keys); a key may be defined
+     * in only one of them (and not in own_keys). */
     const fsi_key_table *const *key_tables;
     int n_key_tables;
+    /* The solver's own keys, written in its solver section [ROLE.NAME] (e.g.
+     * [fluid.ulph]), or NULL when it has none there. Every solver section a case
+     * holds is checked against its solver's table whether that solver is chosen or
+     * not, so one case can carry the settings of several solvers; the chosen one's is
+     * created with its defaults when absent (fsi_case_solver_section). */
+    const fsi_key_table *own_keys;
+    /* The radius [m] within which the solver's particle sums reach (a fluid's kernel
+     * support) for a case whose participant section 'role' and solver section passed
+     * their key checks, or NULL when it has none. fsi_case_validate writes it into
+     * [ROLE] FSI_CASE_SUPPORT_KEY (origin "derived") before the semantic checks, so
+     * that the other participant and the checks can read it without knowing the
+     * solver (docs/coupling.md). */
+    double (*support)(const fsi_case *c, const char *role);
     const fsi_object_kind *objects;     /* object sections it accepts, may be NULL */
     int n_objects;
     /* Semantic checks beyond single keys (e.g. overlapping blocks), or NULL. Called
@@ -98,6 +115,12 @@ typedef struct {
  * a section name are cut to one space: [solid.block   beam] is "solid.block beam". */
 fsi_case *fsi_case_read(const char *path, FILE *errors);
 
+/* The solver section of the solver chosen in [role] ("fluid.ulph" for solver = ulph),
+ * owned by the case, or NULL when [role] names no solver or 'external'. It is the
+ * section to read the solver's own keys from; after validation it exists (with the
+ * defaults) when the solver has own keys. */
+const char *fsi_case_solver_section(const fsi_case *c, const char *role);
+
 /* Applies a command-line override "section.key=value" (it wins over the file; its
  * origin in messages is "--set section.key=value"). The key is the text between the
  * last '.' before the '=' and the '=', the section everything before that '.', so
@@ -107,11 +130,15 @@ fsi_case *fsi_case_read(const char *path, FILE *errors);
 int fsi_case_override(fsi_case *c, const char *assignment, FILE *errors);
 
 /* Checks every section and key against the schema and fills in defaults:
- * unknown section, unknown key (with a "did you mean" suggestion), missing required
- * key, bad value (type, bound, choice), unknown solver, object sections (unknown
- * kind, bad name, no participant section, fewer than min_count of a kind: reported
- * at the participant's header line). Then runs each solver's 'check' whose
- * participant passed. Reports ALL errors, each as "FILE:LINE: [section] key: message"
+ * unknown section, unknown key (with a "did you mean" suggestion, or the section it
+ * belongs in when it is another section's key), missing required key, bad value
+ * (type, bound, choice), unknown solver, solver sections [ROLE.SOLVER] (each against
+ * its solver's own_keys, chosen or not; an unknown one names the known solvers and
+ * object kinds), object sections (unknown kind, bad name, no participant section,
+ * fewer than min_count of a kind: reported at the participant's header line), a
+ * value written for the derived FSI_CASE_SUPPORT_KEY. Creates the chosen solver's
+ * section with its defaults when absent, resolves each support radius, then runs
+ * each solver's 'check' whose participant passed. Reports ALL errors, each as "FILE:LINE: [section] key: message"
  * (the section's header line for a missing key), and returns how many there were
  * (0 = valid). A participant section whose solver is "external" must have
  * 'executable' and may hold any other keys and object sections (passed through;
@@ -121,10 +148,12 @@ int fsi_case_override(fsi_case *c, const char *assignment, FILE *errors);
 int fsi_case_validate(fsi_case *c, const fsi_case_schema *schema, FILE *errors);
 
 /* Writes each flaw of the schema to 'errors' (may be NULL) and returns how many
- * there are: a key defined twice among the tables that apply to one section (for a
- * solver: the participant table and all its key_tables), two sections, solvers or
- * object kinds of one name, a default its own key rejects, a solver whose role is
- * no participant section, an object kind that is not one word. */
+ * there are: a key defined twice among the tables that apply to one solver (the
+ * participant table, all its key_tables and its own_keys) or a table defining the
+ * derived FSI_CASE_SUPPORT_KEY, two sections, solvers or object kinds of one name, a
+ * solver named like an object kind of its role (both would be [ROLE.NAME...]), a
+ * default its own key rejects, a solver whose role is no participant section, an
+ * object kind that is not one word. */
 int fsi_case_schema_check(const fsi_case_schema *schema, FILE *errors);
 
 /* True when the case has this section. */
@@ -153,17 +182,18 @@ int fsi_case_objects(const fsi_case *c, const char *role, const char *kind,
 const char *fsi_case_object_name(const char *section);
 
 /* Where a value came from, for messages: "FILE:LINE" for a key of the file,
- * "--set section.key=value" for an override, "default" for a default, NULL when
- * the key is absent. With key NULL: where the section starts (its header's
+ * "--set section.key=value" for an override, "default" for a default, "derived" for
+ * a value validation derived (FSI_CASE_SUPPORT_KEY), NULL when the key is absent. With key NULL: where the section starts (its header's
  * "FILE:LINE", the --set that created it, or "default" for a section the file
  * lacks). The string belongs to the case. */
 const char *fsi_case_origin(const fsi_case *c, const char *section, const char *key);
 
-/* Writes the resolved case as an INI file: every section (object sections
- * included), every key including defaults, each section header and key line
- * commented with its origin ("# default", "# FILE:LINE", "# --set ..."). Reading
- * it back gives the same sections and values, and keys that were defaults have
- * origin "default" again (so a solver can still tell what the user gave). */
+/* Writes the resolved case as an INI file: every section (object and solver
+ * sections included), every key including defaults and derived values, each section
+ * header and key line commented with its origin ("# default", "# derived",
+ * "# FILE:LINE", "# --set ..."). Reading it back gives the same sections and values,
+ * and keys that were defaults or derived have that origin again (so a solver can
+ * still tell what the user gave, and validating it again derives anew). */
 void fsi_case_write_resolved(const fsi_case *c, FILE *out);
 
 /* The file the case was read from. */
@@ -172,8 +202,8 @@ const char *fsi_case_path(const fsi_case *c);
 void fsi_case_free(fsi_case *c);
 
 /* Writes docs/cases.md for a schema: one table per section, per key table of each
- * solver and per object kind, with key, type, unit, default (or "required"),
- * allowed range or choices, meaning. */
+ * solver, per solver section and per object kind, with key, type, unit, default
+ * (or "required"), allowed range or choices, meaning. */
 void fsi_case_schema_markdown(const fsi_case_schema *schema, FILE *out);
 
 #endif

@@ -123,8 +123,9 @@ static void md_roles_heading(const fsi_case_schema *schema, FILE *out)
     fputs("\n\n", out);
 }
 
-/* A solver's own keys, one table per key table (common solid keys, material
- * keys, the model's keys, ...), each under the table's name. */
+/* A solver's keys: one table per key table of [ROLE] (common solid keys, material
+ * keys, ...), each under the table's name, then its own keys under the heading of
+ * its solver section [ROLE.NAME], and the support it derives. */
 static void md_solver_keys(const fsi_solver_spec *sv, FILE *out)
 {
     int printed = 0;
@@ -132,13 +133,23 @@ static void md_solver_keys(const fsi_solver_spec *sv, FILE *out)
         const fsi_key_table *t = sv->key_tables[i];
         if (!t || t->n_keys == 0)
             continue;
-        fprintf(out, "%s#### Keys: %s\n\n", printed ? "\n" : "", t->name);
+        fprintf(out, "%s#### Keys in [%s]: %s\n\n", printed ? "\n" : "", sv->role, t->name);
         md_paragraph(t->description, out);
         md_table(t, out);
         printed = 1;
     }
+    if (sv->own_keys && sv->own_keys->n_keys > 0) {
+        fprintf(out, "%s#### [%s.%s]: the keys of solver %s\n\n", printed ? "\n" : "",
+                sv->role, sv->name, sv->name);
+        md_paragraph(sv->own_keys->description, out);
+        md_table(sv->own_keys, out);
+        printed = 1;
+    }
     if (!printed)
         fputs("No keys of its own.\n", out);
+    if (sv->support)
+        fprintf(out, "\nDerived: `[%s] %s` (m), the radius its sums reach (see Derived keys "
+                "above).\n", sv->role, FSI_CASE_SUPPORT_KEY);
 }
 
 static void md_object_kind(const fsi_solver_spec *sv, const fsi_object_kind *k, FILE *out)
@@ -205,10 +216,26 @@ void fsi_case_schema_markdown(const fsi_case_schema *schema, FILE *out)
     if (schema->n_roles == 0)
         return;
     md_roles_heading(schema, out);
-    fputs("A participant section runs one solver, chosen with `solver = NAME`; it may hold "
-          "the keys below and the keys of the chosen solver. `solver = external` runs the "
-          "program named by `executable` and passes every other key to it unchecked.\n\n"
-          "Some solvers also take object sections: repeated, named sections "
+    fprintf(out, "A participant section runs one solver, chosen with `solver = NAME`; it "
+            "may hold the keys below and the keys the chosen solver lists under `Keys in "
+            "[ROLE]`. `solver = external` runs the program named by `executable` and passes "
+            "every other key to it unchecked.\n\n"
+            "A solver's own keys (e.g. a fluid scheme's kernel factors) go in its solver "
+            "section `[ROLE.SOLVER]`, e.g. `[fluid.ulph]`, and nowhere else: a case may carry "
+            "one for every solver of the role, so that `--set fluid.solver=NAME` swaps "
+            "solvers without editing the file. Each solver section is checked against its "
+            "solver's keys and given its defaults whether that solver is chosen or not, so a "
+            "typo in any of them is an error; the chosen solver's section is created with its "
+            "defaults when the case has none (the resolved case shows every value in "
+            "effect). A solver's own key written in `[ROLE]` is an error that names its "
+            "section. From the command line: `--set fluid.ulph.artificial_viscosity=0.2`.\n\n"
+            "Derived keys: validation writes `[ROLE] %s` (m), the radius within which the "
+            "chosen solver's particle sums reach (a fluid's kernel support), into the "
+            "resolved case for the solvers that have one, so that the other participant and "
+            "the case checks can read it without knowing the solver (docs/coupling.md). It "
+            "is not a setting: a value written for it is refused. The example and external "
+            "fluids have none.\n\n", FSI_CASE_SUPPORT_KEY);
+    fputs("Some solvers also take object sections: repeated, named sections "
           "`[ROLE.KIND NAME]` that belong to the participant section ROLE, e.g. "
           "`[solid.block beam]`. NAME is one word of letters, digits, `_` and `-`, and two "
           "objects of the same kind may not share it. The kinds a solver takes, their keys "

@@ -113,7 +113,8 @@ static void check_step(fsi_case_checker *k, const char *role)
     if (!(l.sound_speed > 0.0))
         return;     /* check_sound_speed says why */
     const double dx = fsi_case_get_real(k->c, role, "spacing", 0.0);
-    const double sf = fsi_case_get_real(k->c, role, "smoothing_factor", 1.2);
+    const char *own = fsi_case_solver_section(k->c, role);
+    const double sf = fsi_case_get_real(k->c, own, "smoothing_factor", 1.2);
     const double acoustic = fluid_acoustic_step(&l, 0.0), viscous = fluid_viscous_step(&l);
     char what[256];
     if (acoustic <= viscous) {
@@ -125,7 +126,7 @@ static void check_step(fsi_case_checker *k, const char *role)
                          : "max_pressure";
         const fsi_step_factor f[] = {{role, c0_key, l.sound_speed, 1480.0, -1.0},
                                      {role, "spacing", dx, 1e-3, 1.0},
-                                     {role, "smoothing_factor", sf, 1.2, 1.0},
+                                     {own, "smoothing_factor", sf, 1.2, 1.0},
                                      {role, "cfl_acoustic", l.cfl_acoustic, 0.25, 1.0}};
         snprintf(what, sizeof what, "the fluid's acoustic step limit cfl_acoustic h / c0 = "
                  "%g * %g m / %g m/s", l.cfl_acoustic, l.h, l.sound_speed);
@@ -134,7 +135,7 @@ static void check_step(fsi_case_checker *k, const char *role)
         const fsi_step_factor f[] = {{role, "viscosity", l.viscosity, 1e-3, -1.0},
                                      {role, "density", l.density, 1000.0, 1.0},
                                      {role, "spacing", dx, 1e-3, 2.0},
-                                     {role, "smoothing_factor", sf, 1.2, 2.0},
+                                     {own, "smoothing_factor", sf, 1.2, 2.0},
                                      {role, "cfl_viscous", l.cfl_viscous, 0.125, 1.0}};
         snprintf(what, sizeof what, "the fluid's viscous step limit cfl_viscous rho0 h^2 / mu "
                  "= %g * %g kg/m^3 * (%g m)^2 / %g Pa s", l.cfl_viscous, l.density, l.h,
@@ -159,8 +160,7 @@ static void check_periodic(fsi_case_checker *k, const fluid_geometry *g, const c
         return;
     }
     const double dx = g->spacing;
-    const double support = fsi_case_get_real(k->c, role, "smoothing_factor", 1.2) *
-                           fsi_case_get_real(k->c, role, "support_factor", 3.0) * dx;
+    const double support = fsi_case_get_real(k->c, role, FSI_CASE_SUPPORT_KEY, 0.0);
     for (int d = 0; d < FSI_DIM; d++) {
         if (!per.on[d])
             continue;

@@ -20,7 +20,7 @@ void fluid_step_limits_read(fluid_step_limits *l, const fsi_case *c, const char 
     l->density = fsi_case_get_real(c, role, "density", 1000.0);
     l->viscosity = fsi_case_get_real(c, role, "viscosity", 1e-3);
     l->sound_speed = fluid_sound_speed(c, role, l->density);
-    l->h = fsi_case_get_real(c, role, "smoothing_factor", 1.2) *
+    l->h = fsi_case_get_real(c, fsi_case_solver_section(c, role), "smoothing_factor", 1.2) *
            fsi_case_get_real(c, role, "spacing", 0.0);
     l->cfl_acoustic = fsi_case_get_real(c, role, "cfl_acoustic", 0.25);
     l->cfl_viscous = fsi_case_get_real(c, role, "cfl_viscous", 0.125);

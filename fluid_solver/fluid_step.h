@@ -26,7 +26,8 @@ typedef struct {
 double fluid_sound_speed(const fsi_case *c, const char *role, double rho0);
 
 /* The keys of [role] that fluid_stable_step reads, h = smoothing_factor * spacing
- * (the ULPH kernel's; fluid_scheme_smoothing_length of the running scheme). */
+ * (smoothing_factor of the chosen scheme's section, fsi_case_solver_section;
+ * fluid_scheme_smoothing_length of the running scheme). */
 void fluid_step_limits_read(fluid_step_limits *l, const fsi_case *c, const char *role);
 
 /* Acoustic limit cfl_acoustic h / (c0 + vmax) (Monaghan 1992). */

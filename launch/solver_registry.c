@@ -30,11 +30,14 @@ static const char *const roles[] = {"fluid", "solid"};
 static const fsi_key_table *const spring_tables[] = {&fsi_spring_solid_keys};
 static const fsi_key_table *const dashpot_tables[] = {&fsi_dashpot_fluid_keys};
 
+/* In [solid] and [fluid]; each model's or scheme's own table goes in its solver
+ * section ([solid.nosbpd], [fluid.ulph]). The examples' tables stay in [ROLE]: they
+ * are the template for external programs, which read their keys there. */
 static const fsi_key_table *const nosbpd_tables[] = {&fsi_solid_common_keys,
-                                                     &material_key_table, &fsi_nosbpd_keys};
+                                                     &material_key_table};
 
-static const fsi_key_table *const ulph_tables[] = {&fsi_fluid_common_keys, &fsi_ulph_keys};
-static const fsi_key_table *const wcsph_tables[] = {&fsi_fluid_common_keys, &fsi_wcsph_keys};
+static const fsi_key_table *const ulph_tables[] = {&fsi_fluid_common_keys};
+static const fsi_key_table *const wcsph_tables[] = {&fsi_fluid_common_keys};
 
 #define N_TABLES(a) ((int)(sizeof(a) / sizeof((a)[0])))
 
@@ -47,30 +50,38 @@ static int solid_model_check(const fsi_case *c, const char *role, FILE *errors)
 }
 
 static const fsi_solver_spec solvers[] = {
-    {"spring_oscillators", "solid", "fsi-spring-solid",
-     "Example solid of independent mass-spring oscillators (examples/spring_solid.c).",
-     spring_tables, N_TABLES(spring_tables), NULL, 0, NULL},
-    {"linear_dashpot", "fluid", "fsi-dashpot-fluid",
-     "Example fluid: a linear dashpot on every solid particle (examples/dashpot_fluid.c).",
-     dashpot_tables, N_TABLES(dashpot_tables), NULL, 0, NULL},
-    {"nosbpd", "solid", "fsi-solid-nosbpd",
-     "Non-ordinary state-based peridynamics (correspondence model, seed 000 section 2.2) "
-     "with zero-energy control, bond failure and Drucker-Prager plasticity "
-     "(solid_solver/nosbpd, docs/nosbpd.md).",
-     nosbpd_tables, N_TABLES(nosbpd_tables), fsi_solid_object_kinds, FSI_SOLID_N_OBJECT_KINDS,
-     solid_model_check},
-    {"ulph", "fluid", "fsi-fluid-ulph",
-     "Updated Lagrangian Particle Hydrodynamics, a weakly compressible fluid with "
-     "non-local operators, fixed ghost walls and predictor-corrector stepping (seed 000 "
-     "section 2.1, fluid_solver/ulph, docs/ulph.md).",
-     ulph_tables, N_TABLES(ulph_tables), fsi_fluid_object_kinds, FSI_FLUID_N_OBJECT_KINDS,
-     fluid_geometry_check},
-    {"wcsph", "fluid", "fsi-fluid-wcsph",
-     "Weakly compressible SPH with delta-SPH density diffusion, the Wendland C2 kernel, "
-     "Adami dummy walls and a soft contact with the solid (seed 004 section 2, "
-     "fluid_solver/wcsph, docs/wcsph.md).",
-     wcsph_tables, N_TABLES(wcsph_tables), fsi_fluid_object_kinds, FSI_FLUID_N_OBJECT_KINDS,
-     fluid_geometry_check},
+    {.name = "spring_oscillators", .role = "solid", .executable = "fsi-spring-solid",
+     .description =
+         "Example solid of independent mass-spring oscillators (examples/spring_solid.c).",
+     .key_tables = spring_tables, .n_key_tables = N_TABLES(spring_tables)},
+    {.name = "linear_dashpot", .role = "fluid", .executable = "fsi-dashpot-fluid",
+     .description =
+         "Example fluid: a linear dashpot on every solid particle (examples/dashpot_fluid.c).",
+     .key_tables = dashpot_tables, .n_key_tables = N_TABLES(dashpot_tables)},
+    {.name = "nosbpd", .role = "solid", .executable = "fsi-solid-nosbpd",
+     .description =
+         "Non-ordinary state-based peridynamics (correspondence model, seed 000 section 2.2) "
+         "with zero-energy control, bond failure and Drucker-Prager plasticity "
+         "(solid_solver/nosbpd, docs/nosbpd.md).",
+     .key_tables = nosbpd_tables, .n_key_tables = N_TABLES(nosbpd_tables),
+     .own_keys = &fsi_nosbpd_keys, .objects = fsi_solid_object_kinds,
+     .n_objects = FSI_SOLID_N_OBJECT_KINDS, .check = solid_model_check},
+    {.name = "ulph", .role = "fluid", .executable = "fsi-fluid-ulph",
+     .description =
+         "Updated Lagrangian Particle Hydrodynamics, a weakly compressible fluid with "
+         "non-local operators, fixed ghost walls and predictor-corrector stepping (seed 000 "
+         "section 2.1, fluid_solver/ulph, docs/ulph.md).",
+     .key_tables = ulph_tables, .n_key_tables = N_TABLES(ulph_tables),
+     .own_keys = &fsi_ulph_keys, .support = ulph_support, .objects = fsi_fluid_object_kinds,
+     .n_objects = FSI_FLUID_N_OBJECT_KINDS, .check = fluid_geometry_check},
+    {.name = "wcsph", .role = "fluid", .executable = "fsi-fluid-wcsph",
+     .description =
+         "Weakly compressible SPH with delta-SPH density diffusion, the Wendland C2 kernel, "
+         "Adami dummy walls and a soft contact with the solid, predictor-corrector or "
+         "Verlet stepping (seed 004 section 2, fluid_solver/wcsph, docs/wcsph.md).",
+     .key_tables = wcsph_tables, .n_key_tables = N_TABLES(wcsph_tables),
+     .own_keys = &fsi_wcsph_keys, .support = wcsph_support, .objects = fsi_fluid_object_kinds,
+     .n_objects = FSI_FLUID_N_OBJECT_KINDS, .check = fluid_geometry_check},
 };
 
 static const fsi_case_schema schema = {

@@ -293,8 +293,8 @@ static void check_interface_depth(fsi_case_checker *k, const char *role)
         depth < reach * (1.0 - 1e-9))
         fsi_case_problem(k, role, "interface_depth",
                 "%.6g m does not cover the fluid's reach below the surface, %.6g m (its "
-                "kernel support less half its spacing %.6g m): use at least that, or 0 to "
-                "derive it", depth, reach, dx_f);
+                "support radius, [fluid] support = %.6g m, less half its spacing %.6g m): use "
+                "at least that, or 0 to derive it", depth, reach, reach + 0.5 * dx_f, dx_f);
 }
 
 int solid_geometry_check(const fsi_case *c, const char *role, FILE *errors)

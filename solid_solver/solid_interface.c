@@ -8,7 +8,6 @@
 
 #include "lattice_ball.h"
 #include "neighbour_grid.h"
-#include "ulph_keys.h"
 
 int solid_interface_init(solid_interface_buffers *b, int n_particles)
 {
@@ -54,12 +53,9 @@ double solid_interface_fluid_reach(const fsi_case *c, double *fluid_spacing)
     const double dx_f = fsi_case_get_real(c, "fluid", "spacing", 0.0);
     if (fluid_spacing)
         *fluid_spacing = dx_f > 0.0 ? dx_f : 0.0;
-    const char *solver = fsi_case_get(c, "fluid", "solver");
-    if (!(dx_f > 0.0) || !solver || strcmp(solver, "ulph") != 0)
+    const double support = fsi_case_get_real(c, "fluid", FSI_CASE_SUPPORT_KEY, 0.0);
+    if (!(dx_f > 0.0) || !(support > 0.0))
         return 0.0;
-    const double support =
-        fsi_case_get_real(c, "fluid", "smoothing_factor", ULPH_KERNEL_H_OVER_DX) *
-        fsi_case_get_real(c, "fluid", "support_factor", ULPH_KERNEL_SUPPORT_FACTOR) * dx_f;
     return support - 0.5 * dx_f;
 }
 

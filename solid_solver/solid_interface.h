@@ -39,11 +39,12 @@ int solid_interface_init(solid_interface_buffers *b, int n_particles);
 void solid_interface_free(solid_interface_buffers *b);
 
 /* The depth [m] below the body's surface that the fluid of case c reaches
- * (docs/coupling.md, Unequal spacings): for a ULPH fluid its kernel support
- * smoothing_factor * support_factor * dx_f (000 Eq. 17: 1.2 * 3 * dx_f) less half a
- * fluid spacing, the gap its particles keep from a wall; 0 for other fluids or
- * without a [fluid] section (their reach is unknown: the model's surface set alone
- * is sent). *fluid_spacing (may be NULL) gets [fluid] spacing, 0 if none. */
+ * (docs/coupling.md, Unequal spacings): its support radius, which validation derives
+ * from the fluid solver's own keys into [fluid] support (FSI_CASE_SUPPORT_KEY), less
+ * half a fluid spacing, the gap its particles keep from a wall; 0 for a fluid without
+ * one (an example or external fluid) or without a [fluid] section (their reach is
+ * unknown: the model's surface set alone is sent). *fluid_spacing (may be NULL) gets
+ * [fluid] spacing, 0 if none. */
 double solid_interface_fluid_reach(const fsi_case *c, double *fluid_spacing);
 
 /* The interface depth of case c's solid: [solid] interface_depth when given (> 0),

@@ -43,15 +43,16 @@ static const fsi_key_spec common_keys[] = {
     {"mode_origin", FSI_KEY_REAL, "m", "0", FSI_BOUND_NONE, 0, 0, NULL,
      "x of the clamped end for the cantilever mode; points with x below it start at rest."},
     /* 0 means derived (solid_interface_depth): a key, not a protocol field, because
-     * the fluid's reach is a property of the case (its [fluid] spacing and kernel)
-     * that the solid can read before the first window, and so can the case check. */
+     * the fluid's reach is a property of the case (its [fluid] spacing and the derived
+     * [fluid] support) that the solid can read before the first window, and so can the
+     * case check. */
     {"interface_depth", FSI_KEY_REAL, "m", "0", FSI_BOUND_MIN, 0, 0, NULL,
      "Depth below the body's surface (reference configuration) within which every point "
      "is sent to the fluid as a boundary particle, besides the points whose horizon a "
-     "free surface or crack cuts; 0 derives it from a ULPH [fluid] section as the "
-     "kernel support (smoothing_factor * support_factor * fluid spacing) less half a "
-     "fluid spacing, and a smaller value than that is refused (docs/coupling.md, "
-     "Unequal spacings)."},
+     "free surface or crack cuts; 0 derives it from the fluid's support radius (the "
+     "derived [fluid] support) less half a fluid spacing, and a smaller value than that "
+     "is refused; a fluid without a support (an example or external fluid) leaves only "
+     "the horizon-cut points unless it is given (docs/coupling.md, Unequal spacings)."},
     {"energy_growth_limit", FSI_KEY_REAL, "-", "2", FSI_BOUND_MIN_OPEN, 1, 0, NULL,
      "The run stops as unstable when kinetic plus strain energy exceeds this factor times "
      "(initial energy + the work the loads, gravity and fluid have put in); a stable run "

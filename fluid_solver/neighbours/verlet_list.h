@@ -30,7 +30,7 @@
 #include "fluid_particles.h"
 #include "neighbour_grid.h"
 
-/* Default skin as a fraction of the support ([fluid] neighbour_skin). With h = 1.2 dx,
+/* Default skin as a fraction of the support ([fluid.ulph] neighbour_skin). With h = 1.2 dx,
  * delta = 3 h, a skin of 0.1 delta holds 1.21 times the pairs within the support and
  * lasts 0.18 dx of travel of the fastest particle: about 20 steps of F1 at
  * cfl_acoustic = 0.1 and 2 m/s, against a build that costs about three evaluations'

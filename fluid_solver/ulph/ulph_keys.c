@@ -1,4 +1,5 @@
-/* The keys of the ULPH scheme (docs/cases.md is generated from this table). */
+/* The keys of the ULPH scheme (docs/cases.md is generated from this table) and the
+ * support radius they give. */
 #include "ulph_keys.h"
 
 #include "verlet_list.h"
@@ -43,5 +44,14 @@ static const fsi_key_spec keys[] = {
 const fsi_key_table fsi_ulph_keys = {
     "ulph",
     "Updated Lagrangian Particle Hydrodynamics (000 §2.1): the kernel, the artificial "
-    "viscosity and the density filter.",
+    "viscosity and the density filter. Its support radius, derived into [fluid] support, "
+    "is smoothing_factor * support_factor * [fluid] spacing (000 Eq. 17).",
     keys, (int)(sizeof keys / sizeof keys[0])};
+
+double ulph_support(const fsi_case *c, const char *role)
+{
+    const char *own = fsi_case_solver_section(c, role);
+    return fsi_case_get_real(c, own, "smoothing_factor", ULPH_KERNEL_H_OVER_DX) *
+           fsi_case_get_real(c, own, "support_factor", ULPH_KERNEL_SUPPORT_FACTOR) *
+           fsi_case_get_real(c, role, "spacing", 0.0);
+}

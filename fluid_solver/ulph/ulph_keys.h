@@ -1,4 +1,4 @@
-/* The keys of the ULPH scheme in [fluid] (solver = ulph). */
+/* The keys of the ULPH scheme, in its solver section [fluid.ulph] (solver = ulph). */
 #ifndef ULPH_KEYS_H
 #define ULPH_KEYS_H
 
@@ -9,5 +9,9 @@
 #define ULPH_KERNEL_SUPPORT_FACTOR 3.0
 
 extern const fsi_key_table fsi_ulph_keys;
+
+/* The kernel support delta = smoothing_factor * support_factor * spacing [m] (000
+ * Eq. 17) of the ULPH fluid of [role] (fsi_solver_spec.support). */
+double ulph_support(const fsi_case *c, const char *role);
 
 #endif

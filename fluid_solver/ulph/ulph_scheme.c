@@ -105,23 +105,24 @@ fluid_scheme *fluid_scheme_create(const fsi_case *c, const char *role,
         snprintf(msg, msg_size, "out of memory for the ULPH scheme");
         return NULL;
     }
-    const double h_over_dx = fsi_case_get_real(c, role, "smoothing_factor", ULPH_KERNEL_H_OVER_DX);
-    const double q = fsi_case_get_real(c, role, "support_factor", ULPH_KERNEL_SUPPORT_FACTOR);
+    const char *own = fsi_case_solver_section(c, role);    /* [fluid.ulph] */
+    const double h_over_dx = fsi_case_get_real(c, own, "smoothing_factor", ULPH_KERNEL_H_OVER_DX);
+    const double q = fsi_case_get_real(c, own, "support_factor", ULPH_KERNEL_SUPPORT_FACTOR);
     if (gaussian_kernel_init(&s->kernel, h_over_dx * p->spacing, q) != 0) {
         snprintf(msg, msg_size, "[%s] smoothing_factor, support_factor: no kernel with "
-                 "h = %g m and delta / h = %g", role, h_over_dx * p->spacing, q);
+                 "h = %g m and delta / h = %g", own ? own : role, h_over_dx * p->spacing, q);
         free(s);
         return NULL;
     }
     s->eos = (tait_eos){props->density, props->sound_speed, props->tait_exponent};
     s->momentum.viscosity = props->viscosity;
-    s->momentum.artificial_viscosity = fsi_case_get_real(c, role, "artificial_viscosity", 0.02);
+    s->momentum.artificial_viscosity = fsi_case_get_real(c, own, "artificial_viscosity", 0.02);
     s->momentum.h = s->kernel.h;
-    const char *viscous = fsi_case_get(c, role, "viscous_operator");
+    const char *viscous = fsi_case_get(c, own, "viscous_operator");
     s->momentum.viscous_laplacian = !viscous || strcmp(viscous, "laplacian") == 0;
     s->momentum.c0 = props->sound_speed;
     s->momentum.rho0 = props->density;
-    s->momentum.contact = fsi_case_get_real(c, role, "wall_contact", 0.01);
+    s->momentum.contact = fsi_case_get_real(c, own, "wall_contact", 0.01);
     s->momentum.spacing = p->spacing;
     memcpy(s->momentum.gravity, props->gravity, sizeof s->momentum.gravity);
     s->free_slip = props->free_slip;
@@ -131,9 +132,9 @@ fluid_scheme *fluid_scheme_create(const fsi_case *c, const char *role,
     s->step.sound_speed = props->sound_speed;
     s->step.density = props->density;
     s->step.viscosity = props->viscosity;
-    s->filter_interval = fsi_case_get_int(c, role, "density_filter_interval", 20);
-    s->tension = fsi_case_get_bool(c, role, "tension", 0);
-    s->skin = fsi_case_get_real(c, role, "neighbour_skin", FLUID_VERLET_SKIN) * s->kernel.support;
+    s->filter_interval = fsi_case_get_int(c, own, "density_filter_interval", 20);
+    s->tension = fsi_case_get_bool(c, own, "tension", 0);
+    s->skin = fsi_case_get_real(c, own, "neighbour_skin", FLUID_VERLET_SKIN) * s->kernel.support;
     fluid_verlet_init(&s->list);
     fsi_grid_set_periodic(&s->list.grid, &props->periodic);
     ulph_operators_init(&s->ops);

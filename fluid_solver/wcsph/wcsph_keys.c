@@ -55,3 +55,10 @@ const fsi_key_table fsi_wcsph_keys = {
     "Weakly compressible SPH with delta-SPH (004 §2): the Wendland kernel, artificial "
     "viscosity, density diffusion, dummy walls and the coupling with a solid.",
     keys, (int)(sizeof keys / sizeof keys[0])};
+
+double wcsph_support(const fsi_case *c, const char *role)
+{
+    return 2.0 * fsi_case_get_real(c, fsi_case_solver_section(c, role), "smoothing_factor",
+                                   WCSPH_H_OVER_DX) *
+           fsi_case_get_real(c, role, "spacing", 0.0);
+}

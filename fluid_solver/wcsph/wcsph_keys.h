@@ -1,4 +1,4 @@
-/* The keys of the WCSPH scheme in [fluid] (solver = wcsph). */
+/* The keys of the WCSPH scheme in [fluid.wcsph]. */
 #ifndef WCSPH_KEYS_H
 #define WCSPH_KEYS_H
 
@@ -17,5 +17,9 @@
 #define WCSPH_SOLID_CONTACT 0.01
 
 extern const fsi_key_table fsi_wcsph_keys;
+
+/* The kernel support 2 h = 2 smoothing_factor spacing [m] (004 Eq. 5) of the WCSPH
+ * fluid of [role] (fsi_solver_spec.support). */
+double wcsph_support(const fsi_case *c, const char *role);
 
 #endif

@@ -98,14 +98,15 @@ fluid_scheme *fluid_scheme_create(const fsi_case *c, const char *role,
                                   const fluid_properties *props, const fluid_particles *p,
                                   char *msg, size_t msg_size)
 {
+    const char *own = fsi_case_solver_section(c, role);    /* [fluid.wcsph] */
     fluid_scheme *s = calloc(1, sizeof *s);
     if (!s) {
         snprintf(msg, msg_size, "out of memory for the WCSPH scheme");
         return NULL;
     }
-    const double h_over_dx = fsi_case_get_real(c, role, "smoothing_factor", WCSPH_H_OVER_DX);
+    const double h_over_dx = fsi_case_get_real(c, own, "smoothing_factor", WCSPH_H_OVER_DX);
     if (wendland_c2_init(&s->kernel, h_over_dx * p->spacing) != 0) {
-        snprintf(msg, msg_size, "[%s] smoothing_factor: no kernel with h = %g m", role,
+        snprintf(msg, msg_size, "[%s] smoothing_factor: no kernel with h = %g m", own,
                  h_over_dx * p->spacing);
         free(s);
         return NULL;
@@ -117,13 +118,13 @@ fluid_scheme *fluid_scheme_create(const fsi_case *c, const char *role,
     prm->rho0 = props->density;
     prm->gamma = props->tait_exponent;
     prm->viscosity = props->viscosity;
-    prm->beta1 = fsi_case_get_real(c, role, "artificial_viscosity", WCSPH_ARTIFICIAL_VISCOSITY);
-    prm->beta2 = fsi_case_get_real(c, role, "artificial_viscosity_quadratic", 0.0);
-    prm->delta = fsi_case_get_real(c, role, "density_diffusion", WCSPH_DENSITY_DIFFUSION);
-    prm->antuono = choice_is(c, role, "density_diffusion_form", "antuono");
-    prm->laplacian = choice_is(c, role, "viscous_operator", "laplacian");
-    prm->solid_dummy = !choice_is(c, role, "solid_coupling", "contact");
-    prm->contact = fsi_case_get_real(c, role, "solid_contact", WCSPH_SOLID_CONTACT);
+    prm->beta1 = fsi_case_get_real(c, own, "artificial_viscosity", WCSPH_ARTIFICIAL_VISCOSITY);
+    prm->beta2 = fsi_case_get_real(c, own, "artificial_viscosity_quadratic", 0.0);
+    prm->delta = fsi_case_get_real(c, own, "density_diffusion", WCSPH_DENSITY_DIFFUSION);
+    prm->antuono = choice_is(c, own, "density_diffusion_form", "antuono");
+    prm->laplacian = choice_is(c, own, "viscous_operator", "laplacian");
+    prm->solid_dummy = !choice_is(c, own, "solid_coupling", "contact");
+    prm->contact = fsi_case_get_real(c, own, "solid_contact", WCSPH_SOLID_CONTACT);
     prm->spacing = p->spacing;
     memcpy(prm->gravity, props->gravity, sizeof prm->gravity);
     s->free_slip = props->free_slip;
@@ -132,9 +133,9 @@ fluid_scheme *fluid_scheme_create(const fsi_case *c, const char *role,
     s->step.sound_speed = props->sound_speed;
     s->step.density = props->density;
     s->step.viscosity = props->viscosity;
-    s->verlet = choice_is(c, role, "integrator", "verlet");
+    s->verlet = choice_is(c, own, "integrator", "verlet");
     fluid_wc_verlet_init(&s->verlet_integrator, FLUID_VERLET_EULER_INTERVAL);
-    s->skin = fsi_case_get_real(c, role, "neighbour_skin", FLUID_VERLET_SKIN) * s->kernel.support;
+    s->skin = fsi_case_get_real(c, own, "neighbour_skin", FLUID_VERLET_SKIN) * s->kernel.support;
     fluid_verlet_init(&s->list);
     fsi_grid_set_periodic(&s->list.grid, &props->periodic);
     wcsph_pairs_init(&s->pairs);

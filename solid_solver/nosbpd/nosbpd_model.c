@@ -49,40 +49,42 @@ void solid_model_free(solid_model *m)
  * cases). Returns 0, or -1 with msg. */
 static int read_keys(solid_model *m, const fsi_case *c, char *msg, size_t msg_size)
 {
+    const char *own = fsi_case_solver_section(c, SECTION);     /* [solid.nosbpd] */
     const double factor =
-        fsi_case_get_real(c, SECTION, "horizon_factor", NOSBPD_DEFAULT_HORIZON_FACTOR);
+        fsi_case_get_real(c, own, "horizon_factor", NOSBPD_DEFAULT_HORIZON_FACTOR);
     if (!(factor >= 1.0 && factor <= 10.0)) {
-        snprintf(msg, msg_size, "[solid] horizon_factor = %g: needs 1 <= m <= 10", factor);
+        snprintf(msg, msg_size, "[solid.nosbpd] horizon_factor = %g: needs 1 <= m <= 10", factor);
         return -1;
     }
     m->delta = factor * m->dx;
-    const char *inf = fsi_case_get(c, SECTION, "influence_function");
+    const char *inf = fsi_case_get(c, own, "influence_function");
     if (nosbpd_influence_parse(inf ? inf : NOSBPD_DEFAULT_INFLUENCE, &m->influence) != 0) {
-        snprintf(msg, msg_size, "[solid] influence_function = %s: needs one, inverse or "
+        snprintf(msg, msg_size, "[solid.nosbpd] influence_function = %s: needs one, inverse or "
                  "gaussian", inf);
         return -1;
     }
-    m->gradient_order = (int)fsi_case_get_int(c, SECTION, "gradient_order",
+    m->gradient_order = (int)fsi_case_get_int(c, own, "gradient_order",
                                               NOSBPD_DEFAULT_GRADIENT_ORDER);
     if (m->gradient_order != 1 && m->gradient_order != 2) {
-        snprintf(msg, msg_size, "[solid] gradient_order = %d: needs 1 or 2", m->gradient_order);
+        snprintf(msg, msg_size, "[solid.nosbpd] gradient_order = %d: needs 1 or 2",
+                 m->gradient_order);
         return -1;
     }
     m->n_basis = m->gradient_order == 1 ? FSI_DIM : NOSBPD_MAX_BASIS;
     m->gather_stride = FSI_DIM * m->n_basis + 1;
-    m->zero_energy_coefficient = fsi_case_get_real(c, SECTION, "zero_energy_coefficient",
+    m->zero_energy_coefficient = fsi_case_get_real(c, own, "zero_energy_coefficient",
                                                    NOSBPD_DEFAULT_ZERO_ENERGY_COEFFICIENT);
     if (!(m->zero_energy_coefficient >= 0.0 && m->zero_energy_coefficient <= 10.0)) {
-        snprintf(msg, msg_size, "[solid] zero_energy_coefficient = %g: needs 0 <= G <= 10",
+        snprintf(msg, msg_size, "[solid.nosbpd] zero_energy_coefficient = %g: needs 0 <= G <= 10",
                  m->zero_energy_coefficient);
         return -1;
     }
-    m->failure = fsi_case_get_bool(c, SECTION, "failure", 0);
-    const double s0 = fsi_case_get_real(c, SECTION, "critical_stretch", 0.0);
-    const double g0 = fsi_case_get_real(c, SECTION, "fracture_energy", 0.0);
+    m->failure = fsi_case_get_bool(c, own, "failure", 0);
+    const double s0 = fsi_case_get_real(c, own, "critical_stretch", 0.0);
+    const double g0 = fsi_case_get_real(c, own, "fracture_energy", 0.0);
     if (!(s0 >= 0.0) || !(g0 >= 0.0)) {
-        snprintf(msg, msg_size, "[solid] critical_stretch = %g, fracture_energy = %g: neither "
-                 "may be negative", s0, g0);
+        snprintf(msg, msg_size, "[solid.nosbpd] critical_stretch = %g, fracture_energy = %g: "
+                 "neither may be negative", s0, g0);
         return -1;
     }
     m->critical_stretch = 0.0;
@@ -91,7 +93,7 @@ static int read_keys(solid_model *m, const fsi_case *c, char *msg, size_t msg_si
         m->critical_stretch =
             s0 > 0.0 ? s0 : nosbpd_critical_stretch_from_energy(&m->mat, g0, m->delta);
         if (!(m->critical_stretch > 0.0) || !isfinite(m->critical_stretch)) {
-            snprintf(msg, msg_size, "[solid] failure = true needs critical_stretch > 0 or "
+            snprintf(msg, msg_size, "[solid.nosbpd] failure = true needs critical_stretch > 0 or "
                      "fracture_energy > 0");
             return -1;
         }

@@ -55,12 +55,13 @@ def read_case(out):
     ini.optionxform = str
     ini.read(os.path.join(out, "case.resolved.ini"))
     solid = ini["solid"]
+    model = ini["solid." + solid["solver"]]     # the model's own keys
     g = {
         "dx": float(solid["spacing"]),
-        "horizon": float(solid["horizon_factor"]) * float(solid["spacing"]),
+        "horizon": float(model["horizon_factor"]) * float(solid["spacing"]),
         "E": float(solid["youngs_modulus"]),
-        "G0": float(solid["fracture_energy"]),
-        "s0_key": float(solid["critical_stretch"]),
+        "G0": float(model["fracture_energy"]),
+        "s0_key": float(model["critical_stretch"]),
         "plane": solid["plane"],
         "end_time": float(ini["run"]["end_time"]),
     }

@@ -95,3 +95,33 @@ line=$(grep -n '^interface_depth' bad.ini | cut -d: -f1)
 expect_bad interface_depth \
   "^bad.ini:$line: \[solid\] interface_depth: 0.005 m does not cover the fluid's reach below the surface, 0.00775 m" \
   --set solid.spacing=0.000625
+
+# Solver sections (docs/cases.md): a scheme's own key in [fluid] names its section; a
+# typo in the section of a solver that is not chosen (here ULPH's beside the dashpot)
+# is still an error; an unknown [fluid.xyz] names the known ones.
+c1="$FSI_SOURCE_DIR/cases/c1_elastic_plate.ini"
+line=$(grep -n '^artificial_viscosity' "$c1" | cut -d: -f1)
+[ -n "$line" ] || fail "no artificial_viscosity line in $c1"
+sed "${line}d; s/^max_pressure = 2865$/&\nartificial_viscosity = 0.1/" "$c1" >bad.ini
+line=$(grep -n '^artificial_viscosity' bad.ini | cut -d: -f1)
+expect_bad own_key_in_fluid \
+  "^bad.ini:$line: \[fluid\] artificial_viscosity: a key of solvers ulph, wcsph; write it in \[fluid.ulph\] or \[fluid.wcsph\]"
+cp "$c1" bad.ini
+expect_bad own_key_set \
+  "^--set fluid.smoothing_factor=1.3: \[fluid\] smoothing_factor: a key of solvers ulph, wcsph; write it in \[fluid.ulph\] or \[fluid.wcsph\]" \
+  --set fluid.smoothing_factor=1.3
+expect_bad own_key_bound \
+  "^--set fluid.ulph.artificial_viscosity=0.9: \[fluid.ulph\] artificial_viscosity: 0.9 must be <= 0.5" \
+  --set fluid.ulph.artificial_viscosity=0.9
+expect_bad support_written \
+  "^--set fluid.support=0.02: \[fluid\] support: a derived value, not a setting" \
+  --set fluid.support=0.02
+printf '\n[fluid.ulph]\nartifical_viscosity = 0.1\n' | cat good.ini - >bad.ini
+line=$(grep -n '^artifical_viscosity' bad.ini | cut -d: -f1)
+expect_bad unchosen_section_typo \
+  "^bad.ini:$line: \[fluid.ulph\] artifical_viscosity: unknown key 'artifical_viscosity' \(did you mean 'artificial_viscosity'\?\)"
+printf '\n[fluid.xyz]\n' | cat good.ini - >bad.ini
+line=$(grep -n '^\[fluid.xyz\]' bad.ini | cut -d: -f1)
+expect_bad unknown_solver_section \
+  "^bad.ini:$line: \[fluid.xyz\]: unknown section: 'xyz' is no fluid solver \(solver sections: \[fluid.linear_dashpot\], \[fluid.ulph\], \[fluid.wcsph\]\)"
+

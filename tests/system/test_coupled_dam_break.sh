@@ -11,12 +11,22 @@
 #     0.045-0.048 m, mean 0.0465 m) and its time within the published times
 #     0.217-0.260 s widened by 0.02 s. The four references differ by 7 % among
 #     themselves; this case measured +7.5 % (docs/validation.md C1): 15 % is about
-#     twice either.
+#     twice either;
+#   - the resolved case holds the derived [fluid] support and the solid uses it.
 source "$(dirname "$0")/lib.sh"
 PY=/usr/bin/python3
 
 "$FSI_RUN" "$FSI_SOURCE_DIR/cases/c1_elastic_plate.ini" --out c1 --threads 1 \
   --set run.end_time=0.25 >c1.txt 2>&1 || { cat c1.txt; tail -5 c1/*.log; fail "C1 coupled run failed"; }
+
+# The fluid's support radius, 1.2 * 3 * 4 mm, is derived into the resolved case, and
+# the solid takes its interface depth from it (reach = support - dx_f / 2).
+grep -qE '^support = 0.0144 +; # derived$' c1/case.resolved.ini ||
+  { grep -n support c1/case.resolved.ini; fail "no derived [fluid] support = 0.0144 in case.resolved.ini"; }
+grep -q '^\[fluid.ulph\]' c1/case.resolved.ini && grep -q '^\[solid.nosbpd\]' c1/case.resolved.ini ||
+  fail "the chosen solvers' sections are missing from case.resolved.ini"
+grep -q "its reach 0.0124 m" c1/solid.log || { grep interface c1/solid.log; fail "the solid's reach is not 0.0124 m"; }
+pass "derived support 0.0144 m in the resolved case; the solid's reach 0.0124 m"
 
 grep -q "fluid particles inside the solid (closer than half the solid's spacing to a solid particle): at most 0 at once, in 0 windows" \
   c1/fluid.log || { grep interface c1/fluid.log; fail "fluid particles entered the plate"; }

@@ -22,7 +22,11 @@ expect_refused "[fluid.block water] max: the box is 25.5 spacings long along y" 
 expect_refused "[fluid.probe bottom_left] point: lies in no [fluid.block]" \
   --set "fluid.probe bottom_left.point=2,0"
 expect_refused "[fluid] sound_speed: is 0" --set fluid.max_velocity=0 --set fluid.max_pressure=0
-expect_refused "[fluid] artificial_viscosity" --set fluid.artificial_viscosity=0.9
+expect_refused "[fluid.ulph] artificial_viscosity: 0.9 must be <= 0.5" \
+  --set fluid.ulph.artificial_viscosity=0.9
+# A scheme's own key has one place, its solver section.
+expect_refused "[fluid] artificial_viscosity: a key of solvers ulph, wcsph; write it in [fluid.ulph] or [fluid.wcsph]" \
+  --set fluid.artificial_viscosity=0.1
 expect_refused "[fluid.wall left] motion_direction: is zero" \
   --set "fluid.wall left.motion=harmonic" --set "fluid.wall left.motion_direction=0,0"
 expect_refused "[fluid.wall left] motion: " --set "fluid.wall left.motion=wobble"
@@ -37,8 +41,8 @@ set +e
   --set "fluid.wall bottom.min=-0.2,-0.2" --set "fluid.wall bottom.max=1.2,0" \
   --set "fluid.wall left.min=-0.2,0" --set "fluid.wall right.max=1.2,0.6" \
   --set "fluid.probe bottom_left.point=0.25,0" --set fluid.sound_speed=20 \
-  --set fluid.cfl_acoustic=1 --set fluid.cfl_force=1 --set fluid.artificial_viscosity=0 \
-  --set fluid.density_filter_interval=0 --set run.max_window=0.01 >unstable.txt 2>&1
+  --set fluid.cfl_acoustic=1 --set fluid.cfl_force=1 --set fluid.ulph.artificial_viscosity=0 \
+  --set fluid.ulph.density_filter_interval=0 --set run.max_window=0.01 >unstable.txt 2>&1
 status=$?
 set -e
 [ "$status" -eq 1 ] || { cat unstable.txt; fail "unstable run: exit $status, expected 1"; }

@@ -19,7 +19,7 @@ PY=/usr/bin/python3
 CASE="$FSI_SOURCE_DIR/cases/fp_poiseuille_channel.ini"
 
 "$FSI_RUN" "$CASE" --out fp --threads 1 >fp.txt 2>&1 || { cat fp.txt; fail "FP run failed"; }
-"$FSI_RUN" "$CASE" --out fp_stress --threads 1 --set fluid.viscous_operator=stress \
+"$FSI_RUN" "$CASE" --out fp_stress --threads 1 --set fluid.ulph.viscous_operator=stress \
   --set run.end_time=0.2 >fp_stress.txt 2>&1 || { cat fp_stress.txt; fail "FP stress run failed"; }
 
 check() {

@@ -20,7 +20,7 @@ PY=/usr/bin/python3
 
 for form in molteni antuono; do
   "$FSI_RUN" "$FSI_SOURCE_DIR/cases/f0_hydrostatic_tank.ini" --out "f0_$form" --threads 1 \
-    --set fluid.solver=wcsph --set fluid.density_diffusion_form=$form \
+    --set fluid.solver=wcsph --set fluid.wcsph.density_diffusion_form=$form \
     --set fluid.spacing=0.05 --set "fluid.wall bottom.min=-0.2,-0.2" \
     --set "fluid.wall bottom.max=1.2,0" --set "fluid.wall left.min=-0.2,0" \
     --set "fluid.wall right.max=1.2,0.6" >"f0_$form.txt" 2>&1 \

@@ -4,7 +4,7 @@
 #  - failure on: the crack starts at the notch tip before anywhere else, runs along the
 #    notch line (every point with damage > 0.3 within 2 spacings of it) and cuts the
 #    whole ligament;
-#  - failure off (--set solid.failure=false): no damage in any frame, the run finishes,
+#  - failure off (--set solid.nosbpd.failure=false): no damage in any frame, the run finishes,
 #    and the plate is stretched past the critical stretch at the tip, so the first
 #    run's crack is the failure model's doing;
 #  - the first bond breaks when the failure-off run's tip bond reaches s0 (the runs are
@@ -31,7 +31,7 @@ start=$(date +%s)
   >cracked.txt 2>&1 || { cat cracked.txt; fail "run with failure on did not finish"; }
 grep -q "^exit = ok" cracked/run.log || fail "run with failure on: run.log does not end with exit = ok"
 pass "run with failure on finished"
-"$FSI_RUN" "$case_file" --out intact "${reduced[@]}" --set solid.failure=false \
+"$FSI_RUN" "$case_file" --out intact "${reduced[@]}" --set solid.nosbpd.failure=false \
   --set run.output_interval=1e-6 >intact.txt 2>&1 ||
   { cat intact.txt; fail "run with failure off did not finish"; }
 grep -q "^exit = ok" intact/run.log || fail "run with failure off: run.log does not end with exit = ok"

@@ -74,12 +74,14 @@ probe_interval = 1e-3
 [solid]
 solver = nosbpd
 spacing = 0.002
-horizon_factor = 3
-influence_function = inverse
 density = 1000
 youngs_modulus = 1.99875e6
 poisson_ratio = 0.3975
 plane = strain
+
+[solid.nosbpd]
+horizon_factor = 3
+influence_function = inverse
 
 [solid.block clamp]
 min = 0, -0.006
@@ -106,7 +108,7 @@ CASE
 load_point=0.021,0.021
 exclude_radius=0.0065   # one horizon (3 dx = 6 mm), plus a quarter spacing
 
-without_control=(--set solid.zero_energy_coefficient=0)
+without_control=(--set solid.nosbpd.zero_energy_coefficient=0)
 with_control=()   # the default coefficient
 
 spurious() {

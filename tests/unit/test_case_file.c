@@ -73,7 +73,8 @@ static const fsi_key_table *const spring_tables[] = { &spring_table };
 static const fsi_key_table *const dashpot_tables[] = { &dashpot_table };
 
 /* A solid made of objects, its keys split over tables the way the real solid
- * solvers split them: keys of every solid, material keys, the model's own. */
+ * solvers split them: keys of every solid and material keys in [solid], the
+ * model's own in its solver section [solid.blocks]. */
 #if FSI_DIM == 2
 #define VEC_ZERO "0, 0"
 #define VEC_MAX "1, 0.2"
@@ -105,8 +106,36 @@ static const fsi_key_spec blocks_own_keys[] = {
 static const fsi_key_table blocks_own_table = { "blocks", "Keys of the block solid.",
                                                 blocks_own_keys, 1 };
 
-static const fsi_key_table *const blocks_tables[] = { &solid_common_table, &material_table,
-                                                      &blocks_own_table };
+static const fsi_key_table *const blocks_tables[] = { &solid_common_table, &material_table };
+
+/* Two fluid schemes with keys of their own in [fluid.waves] and [fluid.puffs] (one
+ * name in both: each section has its own table) and a common table in [fluid]. Only
+ * waves has a support radius. */
+static const fsi_key_spec fluid_common_keys[] = {
+    { "spacing", FSI_KEY_REAL, "m", "0.01", FSI_BOUND_MIN_OPEN, 0, 0, NULL, "Spacing." },
+};
+static const fsi_key_table fluid_common_table = { "fluid_common", "Keys of every scheme.",
+                                                  fluid_common_keys, 1 };
+static const fsi_key_table *const fluid_tables[] = { &fluid_common_table };
+
+static const fsi_key_spec waves_keys[] = {
+    { "smoothing", FSI_KEY_REAL, "-", "1.5", FSI_BOUND_MIN_OPEN, 0, 0, NULL, "h / dx." },
+    { "alpha", FSI_KEY_REAL, "-", "0.02", FSI_BOUND_MIN | FSI_BOUND_MAX, 0, 1, NULL,
+      "Artificial viscosity." },
+};
+static const fsi_key_table waves_table = { "waves", "Keys of the waves scheme.", waves_keys, 2 };
+
+static const fsi_key_spec puffs_keys[] = {
+    { "smoothing", FSI_KEY_REAL, "-", "2", FSI_BOUND_MIN_OPEN, 0, 0, NULL, "h / dx." },
+    { "delta", FSI_KEY_REAL, "-", "0.1", FSI_BOUND_MIN, 0, 0, NULL, "Density diffusion." },
+};
+static const fsi_key_table puffs_table = { "puffs", "Keys of the puffs scheme.", puffs_keys, 2 };
+
+static double waves_support(const fsi_case *c, const char *role)
+{
+    return 2.0 * fsi_case_get_real(c, fsi_case_solver_section(c, role), "smoothing", -1.0) *
+           fsi_case_get_real(c, role, "spacing", -1.0);
+}
 
 static const fsi_key_spec block_keys[] = {
     { "min", FSI_KEY_VECTOR, "m", NULL, 0, 0, 0, NULL, "Lower corner." },
@@ -165,18 +194,27 @@ static int check_blocks(const fsi_case *c, const char *role, FILE *errors)
 }
 
 static const fsi_solver_spec solvers[] = {
-    { "spring_oscillators", "solid", "fsi_spring_solid", "Particles on springs.", spring_tables,
-      1, NULL, 0, NULL },
-    { "linear_dashpot", "fluid", "fsi_dashpot_fluid", "A linear dashpot as fluid.",
-      dashpot_tables, 1, NULL, 0, NULL },
-    { "blocks", "solid", "fsi_blocks", "A solid of blocks, regions and probes.", blocks_tables, 3,
-      block_objects, 3, check_blocks },
+    { .name = "spring_oscillators", .role = "solid", .executable = "fsi_spring_solid",
+      .description = "Particles on springs.", .key_tables = spring_tables, .n_key_tables = 1 },
+    { .name = "linear_dashpot", .role = "fluid", .executable = "fsi_dashpot_fluid",
+      .description = "A linear dashpot as fluid.", .key_tables = dashpot_tables,
+      .n_key_tables = 1 },
+    { .name = "blocks", .role = "solid", .executable = "fsi_blocks",
+      .description = "A solid of blocks, regions and probes.", .key_tables = blocks_tables,
+      .n_key_tables = 2, .own_keys = &blocks_own_table, .objects = block_objects,
+      .n_objects = 3, .check = check_blocks },
+    { .name = "waves", .role = "fluid", .executable = "fsi_waves",
+      .description = "A particle fluid.", .key_tables = fluid_tables, .n_key_tables = 1,
+      .own_keys = &waves_table, .support = waves_support },
+    { .name = "puffs", .role = "fluid", .executable = "fsi_puffs",
+      .description = "Another particle fluid.", .key_tables = fluid_tables, .n_key_tables = 1,
+      .own_keys = &puffs_table },
 };
 
 static const char *const roles[] = { "fluid", "solid" };
 
 static const fsi_case_schema schema = {
-    sections, 2, &participant, roles, 2, solvers, 3,
+    sections, 2, &participant, roles, 2, solvers, 5,
 };
 
 /* ---------------------------------------------------------------- helpers */
@@ -528,7 +566,7 @@ static void test_solvers(void)
               "'spring_oscillators'?); solid solvers: spring_oscillators, blocks, external");
     EXPECT_AT(msgs, path, text, "solver = spring_oscillators",
               "[fluid] solver: 'spring_oscillators' is a solid solver, not a fluid solver "
-              "(fluid solvers: linear_dashpot, external)");
+              "(fluid solvers: linear_dashpot, waves, puffs, external)");
     fsi_case_free(c);
     free(msgs);
     free(path);
@@ -864,7 +902,9 @@ static void test_objects(void)
     const char *sel = fsi_case_get(c, "solid.region clamp", "select");
     CHECK(sel && strcmp(sel, "inside") == 0, "region default select");
     CHECK(fsi_case_get_real(c, "solid", "youngs_modulus", -1) == 1e9, "material table default");
-    CHECK(fsi_case_get_real(c, "solid", "horizon", -1) == 3.0, "own table default");
+    CHECK(fsi_case_get_real(c, "solid.blocks", "horizon", -1) == 3.0,
+          "own table default in the chosen solver's section");
+    CHECK(fsi_case_get(c, "solid", "horizon") == NULL, "own key in [solid]");
     CHECK(fsi_case_get_real(c, "solid", "time_step", -1) == 1e-4, "common table default");
     const char *any = fsi_case_get(c, "fluid.wall tank", "anything");
     CHECK(any && strcmp(any, "goes") == 0, "external object key passes through");
@@ -1106,12 +1146,43 @@ static const fsi_object_kind dup_objects[] = {
     { "block", "Second.", &region_table, 0 },
 };
 static const fsi_solver_spec dup_solvers[] = {
-    { "clash", "solid", "fsi_clash", "Bad.", dup_tables, 2, dup_objects, 2, NULL },
+    { .name = "clash", .role = "solid", .executable = "fsi_clash", .description = "Bad.",
+      .key_tables = dup_tables, .n_key_tables = 2, .objects = dup_objects, .n_objects = 2 },
 };
 static const fsi_case_schema dup_schema = { sections, 2, &participant, roles, 2, dup_solvers, 1 };
 
+/* One place per key across [ROLE] and [ROLE.SOLVER]; the derived key in no table; a
+ * solver named like an object kind of its role. */
+static const fsi_key_spec own_dup_keys[] = {
+    { "density", FSI_KEY_REAL, "kg/m^3", "1", FSI_BOUND_MIN_OPEN, 0, 0, NULL, "Again." },
+    { "support", FSI_KEY_REAL, "m", "1", FSI_BOUND_MIN_OPEN, 0, 0, NULL, "Derived." },
+};
+static const fsi_key_table own_dup_table = { "own_dup", "Clashes.", own_dup_keys, 2 };
+static const fsi_key_table *const own_dup_tables[] = { &material_table };
+static const fsi_solver_spec own_dup_solvers[] = {
+    { .name = "clash2", .role = "solid", .executable = "x", .description = "Bad.",
+      .key_tables = own_dup_tables, .n_key_tables = 1, .own_keys = &own_dup_table },
+    { .name = "region", .role = "solid", .executable = "x", .description = "Bad.",
+      .objects = block_objects, .n_objects = 3 },
+};
+static const fsi_case_schema own_dup_schema = { sections, 2, &participant, roles, 2,
+                                                own_dup_solvers, 2 };
+
 static void test_schema_check(void)
 {
+    FILE *own_err = tmpfile();
+    int own_n = fsi_case_schema_check(&own_dup_schema, own_err);
+    char *own_msgs = read_all(own_err);
+    CHECK(own_n == 3, "own-key schema flaws: %d:\n%s", own_n, own_msgs);
+    CHECK(strstr(own_msgs, "solver clash2: key 'density' is defined in table 'materials' and "
+                           "again in table 'own_dup'\n") != NULL,
+          "a key in [solid] and [solid.clash2]:\n%s", own_msgs);
+    CHECK(strstr(own_msgs, "solver clash2: table 'own_dup' defines 'support', which validation "
+                           "derives\n") != NULL, "derived key in a table:\n%s", own_msgs);
+    CHECK(strstr(own_msgs, "solver region: solver region of role solid has an object kind of "
+                           "this name\n") != NULL, "solver named like a kind:\n%s", own_msgs);
+    free(own_msgs);
+
     FILE *err = tmpfile();
     CHECK(fsi_case_schema_check(&schema, err) == 0, "test schema is sound");
     int n = fsi_case_schema_check(&dup_schema, err);
@@ -1222,9 +1293,11 @@ static void test_markdown_objects(void)
     char *md = read_all(f);
     static const char *const wanted[] = {
         "### solver = blocks (solid)",
-        "#### Keys: solid_common\n\nKeys of every solid.\n\n| key |",
-        "#### Keys: materials\n\nMaterial keys.\n\n| key |",
-        "#### Keys: blocks\n",
+        "#### Keys in [solid]: solid_common\n\nKeys of every solid.\n\n| key |",
+        "#### Keys in [solid]: materials\n\nMaterial keys.\n\n| key |",
+        "#### [solid.blocks]: the keys of solver blocks\n\nKeys of the block solid.\n\n| key |",
+        "#### [fluid.waves]: the keys of solver waves\n",
+        "Derived: `[fluid] support` (m)",
         "#### [solid.block NAME] sections (at least one)\n\nParticles filling a box.\n\n| key |",
         "#### [solid.region NAME] sections (any number)\n\nParticles selected by a box.\n",
         "| `select` | choice | - | `inside` | inside, outside |",
@@ -1233,9 +1306,244 @@ static void test_markdown_objects(void)
     };
     for (size_t i = 0; i < sizeof wanted / sizeof wanted[0]; i++)
         CHECK(strstr(md, wanted[i]) != NULL, "markdown lacks '%s'", wanted[i]);
-    CHECK(strstr(md, "#### [solid.block NAME]") > strstr(md, "#### Keys: blocks"),
+    CHECK(strstr(md, "#### [solid.block NAME]") > strstr(md, "#### [solid.blocks]"),
           "object kinds come after the solver's key tables");
+    CHECK(count_occurrences(md, "Derived: `[fluid] support`") == 1,
+          "only the solver with a support radius derives one");
     free(md);
+}
+
+/* ---------------------------------------------------------- solver sections */
+
+/* A case with settings for two fluid schemes: each solver section is checked against
+ * its own scheme's keys, chosen or not, and gets its defaults; the chosen one's is
+ * created when absent; an own key in [fluid] names its section; an unknown
+ * [fluid.xyz] names the known ones. */
+static void test_solver_sections(void)
+{
+    static const char text[] =
+        "[run]\nend_time = 1\n"
+        "[fluid]\nsolver = waves\nspacing = 0.02\n"
+        "[fluid.waves]\nalpha = 0.1\n"
+        "[fluid.puffs]\ndelta = 0.2\n";
+    char *path = write_case("sections_ok.ini", text);
+    char *msgs;
+    int n;
+    fsi_case *c = load(path, &msgs, &n);
+    CHECK(c && n == 0, "two scheme sections: %d errors:\n%s", n, msgs);
+    if (c) {
+        const char *own = fsi_case_solver_section(c, "fluid");
+        CHECK(own && strcmp(own, "fluid.waves") == 0, "solver section %s", own ? own : "(null)");
+        CHECK(fsi_case_get_real(c, "fluid.waves", "alpha", -1) == 0.1, "given own key");
+        CHECK(fsi_case_get_real(c, "fluid.waves", "smoothing", -1) == 1.5,
+              "default in the chosen section");
+        CHECK(fsi_case_get_real(c, "fluid.puffs", "smoothing", -1) == 2.0,
+              "default in a section not chosen");
+        CHECK(fsi_case_get_real(c, "fluid.puffs", "delta", -1) == 0.2, "unchosen given key");
+        CHECK(fsi_case_solver_section(c, "solid") == NULL, "no [solid]: no solver section");
+    }
+    fsi_case_free(c);
+    free(msgs);
+    free(path);
+
+    /* The chosen solver's section is created with its defaults, right after [solid],
+     * and a solver without own keys has no section. */
+    static const char text2[] =
+        "[run]\nend_time = 1\n"
+        "[solid]\nsolver = blocks\ndensity = 1\n"
+        "[solid.block b]\nmin = " VEC_ZERO "\nmax = " VEC_MAX "\n"
+        "[fluid]\nsolver = linear_dashpot\n";
+    path = write_case("sections_absent.ini", text2);
+    c = load(path, &msgs, &n);
+    CHECK(c && n == 0, "absent solver section: %d errors:\n%s", n, msgs);
+    if (c) {
+        CHECK(fsi_case_get_real(c, "solid.blocks", "horizon", -1) == 3.0,
+              "absent chosen section created with its defaults");
+        const char *o = fsi_case_origin(c, "solid.blocks", NULL);
+        CHECK(o && strcmp(o, "default") == 0, "created section's origin %s", o ? o : "(null)");
+        CHECK(!fsi_case_has_section(c, "fluid.linear_dashpot"), "no section without own keys");
+        CHECK(!fsi_case_has_section(c, "fluid.waves"), "sections of unchosen solvers not made");
+        FILE *f = tmpfile();
+        fsi_case_write_resolved(c, f);
+        char *resolved = read_all(f);
+        const char *solid = strstr(resolved, "\n[solid] ");
+        const char *blocks = strstr(resolved, "\n[solid.blocks] ");
+        const char *beam = strstr(resolved, "\n[solid.block b] ");
+        CHECK(solid && blocks && beam && solid < blocks && blocks < beam,
+              "[solid.blocks] written right after [solid]:\n%s", resolved);
+        free(resolved);
+    }
+    fsi_case_free(c);
+    free(msgs);
+    free(path);
+
+    static const char bad[] =
+        "[run]\nend_time = 1\n"
+        "[fluid]\nsolver = waves\nspacing = 0.02\nalpha = 0.1\ndelta = 0.3\n"
+        "[fluid.waves]\nalpa = 0.1\nspacing = 0.01\n"
+        "[fluid.puffs]\ndelat = 0.2\nsmoothing = -1\n"
+        "[fluid.xyz]\n"
+        "[fluid.puffs p]\n"
+        "[solid]\nsolver = spring_oscillators\nstiffness = 1\n"
+        "[solid.linear_dashpot]\n";
+    path = write_case("sections_bad.ini", bad);
+    c = load(path, &msgs, &n);
+    CHECK(n == 9, "bad solver sections: %d errors (want 9):\n%s", n, msgs);
+    EXPECT_AT(msgs, path, bad, "alpha = 0.1\ndelta",
+              "[fluid] alpha: a key of solver waves; write it in [fluid.waves]\n");
+    EXPECT_AT(msgs, path, bad, "delta = 0.3",
+              "[fluid] delta: a key of solver puffs; write it in [fluid.puffs]\n");
+    EXPECT_AT(msgs, path, bad, "alpa",
+              "[fluid.waves] alpa: unknown key 'alpa' (did you mean 'alpha'?)\n");
+    EXPECT_AT(msgs, path, bad, "spacing = 0.01",
+              "[fluid.waves] spacing: a key of [fluid], not of its solver section; write it "
+              "there\n");
+    EXPECT_AT(msgs, path, bad, "delat",
+              "[fluid.puffs] delat: unknown key 'delat' (did you mean 'delta'?)\n");
+    EXPECT_AT(msgs, path, bad, "smoothing = -1", "[fluid.puffs] smoothing: -1 must be > 0\n");
+    EXPECT_AT(msgs, path, bad, "[fluid.xyz]",
+              "[fluid.xyz]: unknown section: 'xyz' is no fluid solver (solver sections: "
+              "[fluid.linear_dashpot], [fluid.waves], [fluid.puffs]), and solver waves takes "
+              "no object sections\n");
+    EXPECT_AT(msgs, path, bad, "[fluid.puffs p]",
+              "[fluid.puffs p]: a solver section has no name: write [fluid.puffs]\n");
+    EXPECT_AT(msgs, path, bad, "[solid.linear_dashpot]",
+              "[solid.linear_dashpot]: unknown section: 'linear_dashpot' is no solid solver "
+              "(solver sections: [solid.spring_oscillators], [solid.blocks]), and solver "
+              "spring_oscillators takes no object sections\n");
+    CHECK(strstr(msgs, "[fluid.waves] smoothing") == NULL, "defaults are not errors:\n%s", msgs);
+    fsi_case_free(c);
+    free(msgs);
+    free(path);
+
+    /* With the blocks solid the list names its object kinds too, with a guess; a
+     * solver section of a solver without own keys says where its keys go. */
+    static const char bad2[] =
+        "[run]\nend_time = 1\n"
+        "[solid]\nsolver = blocks\ndensity = 1\n"
+        "[solid.block b]\nmin = " VEC_ZERO "\nmax = " VEC_MAX "\n"
+        "[solid.blcks]\n"
+        "[solid.spring_oscillators]\nstiffness = 1\n";
+    path = write_case("sections_bad2.ini", bad2);
+    c = load(path, &msgs, &n);
+    CHECK(n == 2, "bad solid sections: %d errors (want 2):\n%s", n, msgs);
+    EXPECT_AT(msgs, path, bad2, "[solid.blcks]",
+              "[solid.blcks]: unknown section: 'blcks' (did you mean 'blocks'?) is neither a "
+              "solid solver (solver sections: [solid.spring_oscillators], [solid.blocks]) nor "
+              "an object kind of solver blocks (object sections: [solid.block NAME], "
+              "[solid.region NAME], [solid.probe NAME])\n");
+    EXPECT_AT(msgs, path, bad2, "[solid.spring_oscillators]",
+              "[solid.spring_oscillators]: solver spring_oscillators has no solver section: its "
+              "keys are written in [solid]\n");
+    fsi_case_free(c);
+    free(msgs);
+    free(path);
+
+    /* --set reaches a solver section: the key is after the last '.'. */
+    static const char text3[] = "[run]\nend_time = 1\n[fluid]\nsolver = waves\n";
+    path = write_case("sections_set.ini", text3);
+    FILE *err = tmpfile();
+    c = fsi_case_read(path, err);
+    CHECK(c && fsi_case_override(c, "fluid.waves.alpha=0.3", err) == 0 &&
+              fsi_case_override(c, "fluid.puffs.delta=-1", err) == 0 &&
+              fsi_case_override(c, "fluid.alpha=0.2", err) == 0, "--set into solver sections");
+    n = c ? fsi_case_validate(c, &schema, err) : -1;
+    msgs = read_all(err);
+    CHECK(n == 2, "--set solver sections: %d errors (want 2):\n%s", n, msgs);
+    CHECK(strstr(msgs, "--set fluid.puffs.delta=-1: [fluid.puffs] delta: -1 must be >= 0\n"),
+          "--set into an unchosen section is checked:\n%s", msgs);
+    CHECK(strstr(msgs, "--set fluid.alpha=0.2: [fluid] alpha: a key of solver waves; write it "
+                       "in [fluid.waves]\n"), "--set of an own key into [fluid]:\n%s", msgs);
+    CHECK(c && fsi_case_get_real(c, "fluid.waves", "alpha", -1) == 0.3,
+          "--set fluid.waves.alpha");
+    fsi_case_free(c);
+    free(msgs);
+    free(path);
+}
+
+/* The support radius: derived into [fluid] support before the solvers' checks, written
+ * to the resolved case as derived and derived anew when that is read back (after a
+ * --set of the key it comes from), refused when the user writes it, absent for a
+ * solver without one. */
+static void test_derived_support(void)
+{
+    static const char text[] =
+        "[run]\nend_time = 1\n[fluid]\nsolver = waves\nspacing = 0.02\n"
+        "[fluid.waves]\nsmoothing = 1.2\n";
+    char *path = write_case("support.ini", text);
+    char *msgs;
+    int n;
+    fsi_case *c = load(path, &msgs, &n);
+    CHECK(c && n == 0, "support case: %d errors:\n%s", n, msgs);
+    free(msgs);
+    if (!c) {
+        free(path);
+        return;
+    }
+    const double want = 2.0 * 1.2 * 0.02;
+    CHECK(fsi_case_get_real(c, "fluid", "support", -1) == want, "support %s, want %.17g",
+          fsi_case_get(c, "fluid", "support"), want);
+    const char *o = fsi_case_origin(c, "fluid", "support");
+    CHECK(o && strcmp(o, "derived") == 0, "support origin %s", o ? o : "(null)");
+    char *out_path = format("%s/support_resolved.ini", tmp_dir);
+    FILE *out = fopen(out_path, "w");
+    fsi_case_write_resolved(c, out);
+    fclose(out);
+    out = fopen(out_path, "r");
+    char *resolved = read_all(out);
+    CHECK(strstr(resolved, "\nsupport = 0.048 ") && strstr(resolved, "; # derived\n"),
+          "derived support in the resolved case:\n%s", resolved);
+    fsi_case_free(c);
+
+    /* Read back and validated again (fsi replay does): no error, derived anew. */
+    FILE *err = tmpfile();
+    c = fsi_case_read(out_path, err);
+    CHECK(c && fsi_case_override(c, "fluid.waves.smoothing=2", err) == 0, "read back");
+    n = c ? fsi_case_validate(c, &schema, err) : -1;
+    msgs = read_all(err);
+    CHECK(n == 0, "resolved case with a derived support: %d errors:\n%s", n, msgs);
+    CHECK(c && fsi_case_get_real(c, "fluid", "support", -1) == 2.0 * 2.0 * 0.02,
+          "support derived anew after --set: %s", c ? fsi_case_get(c, "fluid", "support") : "");
+    free(msgs);
+    /* Another solver without a support: the derived value read back goes. */
+    CHECK(c && fsi_case_override(c, "fluid.solver=puffs", stderr) == 0, "--set solver");
+    err = tmpfile();
+    n = c ? fsi_case_validate(c, &schema, err) : -1;
+    msgs = read_all(err);
+    CHECK(n == 0, "swapped to puffs: %d errors:\n%s", n, msgs);
+    CHECK(c && fsi_case_get(c, "fluid", "support") == NULL, "stale support kept: %s",
+          c ? fsi_case_get(c, "fluid", "support") : "");
+    fsi_case_free(c);
+    free(msgs);
+    free(resolved);
+    free(out_path);
+    free(path);
+
+    /* Written by the user, in the file or with --set: refused, for any solver. */
+    static const char bad[] =
+        "[run]\nend_time = 1\n[fluid]\nsolver = waves\nsupport = 0.05\n"
+        "[solid]\nsolver = external\nexecutable = /bin/true\nsupport = 1\n";
+    path = write_case("support_bad.ini", bad);
+    c = load(path, &msgs, &n);
+    CHECK(n == 2, "user-written support: %d errors (want 2):\n%s", n, msgs);
+    EXPECT_AT(msgs, path, bad, "support = 0.05",
+              "[fluid] support: a derived value, not a setting: validation writes the fluid "
+              "solver's support radius (from its own keys and spacing) into the resolved "
+              "case; remove it\n");
+    EXPECT_AT(msgs, path, bad, "support = 1", "[solid] support: a derived value, not a setting");
+    CHECK(c && strcmp(fsi_case_get(c, "fluid", "support"), "0.05") == 0,
+          "a refused value is not replaced");
+    fsi_case_free(c);
+    free(msgs);
+    free(path);
+    static const char typo[] = "[run]\nend_time = 1\n[fluid]\nsolver = puffs\nsuport = 1\n";
+    path = write_case("support_typo.ini", typo);
+    c = load(path, &msgs, &n);
+    CHECK(n == 1 && !strstr(msgs, "did you mean 'support'"),
+          "the derived key is never suggested:\n%s", msgs);
+    fsi_case_free(c);
+    free(msgs);
+    free(path);
 }
 
 int main(void)
@@ -1266,6 +1574,8 @@ int main(void)
     test_schema_check();
     test_round_trip_objects();
     test_markdown_objects();
+    test_solver_sections();
+    test_derived_support();
 
     if (failures) {
         fprintf(stderr, "test_case_file: %d of %d checks failed\n", failures, checks);

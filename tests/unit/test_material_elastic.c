@@ -249,7 +249,8 @@ static const fsi_key_table participant = {"participant", "Participant keys.", pa
 static const char *const roles[] = {"solid"};
 static const fsi_key_table *const tables[] = {&material_key_table};
 static const fsi_solver_spec solvers[] = {
-    {"mat", "solid", "none", "Material keys only.", tables, 1, NULL, 0, material_hook},
+    {.name = "mat", .role = "solid", .executable = "none", .description = "Material keys only.",
+     .key_tables = tables, .n_key_tables = 1, .check = material_hook},
 };
 static const fsi_case_schema schema = {NULL, 0, &participant, roles, 1, solvers, 1};
 

@@ -16,6 +16,7 @@
 #include "test_nosbpd_common.h"
 
 static const char *CASE_BASE = "[solid]\n"
+                               "solver = nosbpd\n"
                                "density = 1000\n"
                                "youngs_modulus = 1e6\n"
                                "poisson_ratio = 0.25\n";
@@ -53,7 +54,8 @@ static void check_breaking(void)
     const double s0 = 0.01;
     solid_particles *p = test_lattice(30, 8, 5, 0.01, 1000.0);
     char text[512];
-    snprintf(text, sizeof text, "%sfailure = true\ncritical_stretch = %g\n", CASE_BASE, s0);
+    snprintf(text, sizeof text, "%s[solid.nosbpd]\n"
+                                "failure = true\ncritical_stretch = %g\n", CASE_BASE, s0);
     solid_model *m = test_model(text, p);
     CHECK(nosbpd_critical_stretch(m) == s0, "critical stretch %g", nosbpd_critical_stretch(m));
     const nosbpd_bonds *b = nosbpd_model_bonds(m);
@@ -180,7 +182,8 @@ static void check_no_failure_region(void)
             unbreakable++;
         }
     char text[512];
-    snprintf(text, sizeof text, "%sfailure = true\ncritical_stretch = %g\n", CASE_BASE, s0);
+    snprintf(text, sizeof text, "%s[solid.nosbpd]\n"
+                                "failure = true\ncritical_stretch = %g\n", CASE_BASE, s0);
     solid_model *m = test_model(text, p);
     const nosbpd_bonds *b = nosbpd_model_bonds(m);
     double *x_prev = malloc((size_t)p->n * FSI_DIM * sizeof *x_prev);
@@ -215,7 +218,8 @@ static void check_crack_surface(void)
     const int n_axis[3] = {20, 10, 8};
     solid_particles *p = test_lattice(n_axis[0], n_axis[1], n_axis[2], 0.01, 1000.0);
     char text[512];
-    snprintf(text, sizeof text, "%sfailure = true\ncritical_stretch = 0.01\n", CASE_BASE);
+    snprintf(text, sizeof text, "%s[solid.nosbpd]\n"
+                                "failure = true\ncritical_stretch = 0.01\n", CASE_BASE);
     solid_model *m = test_model(text, p);
     uint8_t *surface = malloc((size_t)p->n);
     int count = solid_model_surface(m, p, surface);
@@ -257,7 +261,8 @@ static void check_critical_stretch(void)
     solid_particles *p = test_lattice(6, 6, 6, 0.01, 1000.0);
     const double pi = 3.14159265358979323846, g0 = 50.0, e = 1e6, delta = 0.03;
     char text[512];
-    snprintf(text, sizeof text, "%splane = strain\nfailure = true\nfracture_energy = %g\n",
+    snprintf(text, sizeof text, "%splane = strain\n[solid.nosbpd]\n"
+                                "failure = true\nfracture_energy = %g\n",
              CASE_BASE, g0);
     solid_model *m = test_model(text, p);
     double expected = FSI_DIM == 2 ? sqrt(5 * pi * g0 / (12 * e * delta))
@@ -266,7 +271,8 @@ static void check_critical_stretch(void)
           "plane strain s0 = %.15g, expected %.15g", nosbpd_critical_stretch(m), expected);
     solid_model_free(m);
     if (FSI_DIM == 2) {
-        snprintf(text, sizeof text, "%splane = stress\nfailure = true\nfracture_energy = %g\n",
+        snprintf(text, sizeof text, "%splane = stress\n[solid.nosbpd]\n"
+                                    "failure = true\nfracture_energy = %g\n",
                  CASE_BASE, g0);
         m = test_model(text, p);
         expected = sqrt(4 * pi * g0 / (9 * e * delta));
@@ -275,14 +281,15 @@ static void check_critical_stretch(void)
         solid_model_free(m);
     }
     snprintf(text, sizeof text,
-             "%sfailure = true\nfracture_energy = %g\ncritical_stretch = 0.05\n", CASE_BASE, g0);
+             "%s[solid.nosbpd]\n"
+             "failure = true\nfracture_energy = %g\ncritical_stretch = 0.05\n", CASE_BASE, g0);
     m = test_model(text, p);
     CHECK(nosbpd_critical_stretch(m) == 0.05, "critical_stretch did not win: %g",
           nosbpd_critical_stretch(m));
     solid_model_free(m);
 
     /* failure = true with neither key: an error naming the keys. */
-    snprintf(text, sizeof text, "%sfailure = true\n", CASE_BASE);
+    snprintf(text, sizeof text, "%s[solid.nosbpd]\nfailure = true\n", CASE_BASE);
     fsi_case *c = test_case(text);
     char msg[512] = "";
     m = solid_model_create(c, p, msg, sizeof msg);

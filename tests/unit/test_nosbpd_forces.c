@@ -16,6 +16,7 @@
 #include "test_nosbpd_common.h"
 
 static const char *CASE_BASE = "[solid]\n"
+                               "solver = nosbpd\n"
                                "density = 1000\n"
                                "youngs_modulus = 1e6\n"
                                "poisson_ratio = 0.25\n"
@@ -34,7 +35,8 @@ static void check_patch(const char *influence)
     const double dx = 0.01;
     solid_particles *p = test_lattice(n_axis[0], n_axis[1], n_axis[2], dx, 1000.0);
     char text[512];
-    snprintf(text, sizeof text, "%sinfluence_function = %s\n", CASE_BASE, influence);
+    snprintf(text, sizeof text, "%s[solid.nosbpd]\n"
+                                "influence_function = %s\n", CASE_BASE, influence);
     solid_model *m = test_model(text, p);
     double *stress = nosbpd_stress(m);
     for (int i = 0; i < p->n; i++) {
@@ -119,7 +121,8 @@ static double *run_steps(int threads, int64_t *broken)
     test_rng = 12345;
     solid_particles *p = test_lattice(30, 20, 6, 0.01, 1000.0);
     char text[512];
-    snprintf(text, sizeof text, "%sfailure = true\ncritical_stretch = 0.02\n", CASE_BASE);
+    snprintf(text, sizeof text, "%s[solid.nosbpd]\n"
+                                "failure = true\ncritical_stretch = 0.02\n", CASE_BASE);
     solid_model *m = test_model(text, p);
     double *x_prev = malloc((size_t)p->n * FSI_DIM * sizeof *x_prev);
     double *force = malloc((size_t)p->n * FSI_DIM * sizeof *force);
@@ -159,7 +162,8 @@ static void checkerboard_forces(const char *coefficient, double *interior_max,
     const double dx = 0.01, a = 1e-4 * dx;
     solid_particles *p = test_lattice(n_axis[0], n_axis[1], n_axis[2], dx, 1000.0);
     char text[512];
-    snprintf(text, sizeof text, "%szero_energy_coefficient = %s\n", CASE_BASE, coefficient);
+    snprintf(text, sizeof text, "%s[solid.nosbpd]\n"
+                                "zero_energy_coefficient = %s\n", CASE_BASE, coefficient);
     solid_model *m = test_model(text, p);
     double *x_prev = copy_positions(p);
     double *force = malloc((size_t)p->n * FSI_DIM * sizeof *force);

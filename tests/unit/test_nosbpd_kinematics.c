@@ -11,6 +11,7 @@
 #include "nosbpd_stress_update.h"
 
 static const char *CASE_BASE = "[solid]\n"
+                               "solver = nosbpd\n"
                                "density = 1000\n"
                                "youngs_modulus = 1e6\n"
                                "poisson_ratio = 0.25\n"
@@ -101,7 +102,8 @@ static void check_shape_tensor(const char *influence)
     const double dx = 0.01, m_factor = 3.0, delta = m_factor * dx;
     solid_particles *p = test_lattice(side, side, side, dx, 1000.0);
     char text[512];
-    snprintf(text, sizeof text, "%sinfluence_function = %s\nhorizon_factor = %g\n", CASE_BASE,
+    snprintf(text, sizeof text, "%s[solid.nosbpd]\n"
+                                "influence_function = %s\nhorizon_factor = %g\n", CASE_BASE,
              influence, m_factor);
     solid_model *m = test_model(text, p);
 
@@ -212,7 +214,8 @@ static void check_quadratic(int gradient_order)
     const double dx = 0.01;
     solid_particles *p = test_lattice(nx, ny, nz, dx, 1000.0);
     char text[256];
-    snprintf(text, sizeof text, "%sgradient_order = %d\n", CASE_BASE, gradient_order);
+    snprintf(text, sizeof text, "%s[solid.nosbpd]\n"
+                                "gradient_order = %d\n", CASE_BASE, gradient_order);
     solid_model *m = test_model(text, p);
     double h[FSI_DIM][FSI_DIM][FSI_DIM];
     for (int d = 0; d < FSI_DIM; d++)
@@ -277,7 +280,8 @@ static void check_rotation(double prestress, int gradient_order)
     const int nx = 10, ny = 7, nz = 4;
     solid_particles *p = test_lattice(nx, ny, nz, 0.01, 1000.0);
     char text[256];
-    snprintf(text, sizeof text, "%sgradient_order = %d\n", CASE_BASE, gradient_order);
+    snprintf(text, sizeof text, "%s[solid.nosbpd]\n"
+                                "gradient_order = %d\n", CASE_BASE, gradient_order);
     solid_model *m = test_model(text, p);
     double *stress = nosbpd_stress(m);
     for (int i = 0; i < p->n; i++)

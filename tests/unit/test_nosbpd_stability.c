@@ -90,15 +90,19 @@ static void check(const char *label, const char *case_text)
 
 int main(void)
 {
-    const char *base = "[solid]\ndensity = 1000\nyoungs_modulus = 1e6\npoisson_ratio = 0.3\n";
+    const char *base =
+        "[solid]\nsolver = nosbpd\ndensity = 1000\nyoungs_modulus = 1e6\npoisson_ratio = 0.3\n";
     char text[512];
     snprintf(text, sizeof text, "%splane = strain\n", base);
     check("plane strain, G = 0.1", text);
-    snprintf(text, sizeof text, "%splane = strain\nzero_energy_coefficient = 0\n", base);
+    snprintf(text, sizeof text, "%splane = strain\n[solid.nosbpd]\n"
+                                "zero_energy_coefficient = 0\n", base);
     check("plane strain, G = 0", text);
-    snprintf(text, sizeof text, "%splane = strain\nzero_energy_coefficient = 2\n", base);
+    snprintf(text, sizeof text, "%splane = strain\n[solid.nosbpd]\n"
+                                "zero_energy_coefficient = 2\n", base);
     check("plane strain, G = 2", text);
-    snprintf(text, sizeof text, "%splane = stress\ninfluence_function = one\n", base);
+    snprintf(text, sizeof text, "%splane = stress\n[solid.nosbpd]\n"
+                                "influence_function = one\n", base);
     check("plane stress, omega = 1", text);
     return unit_check_report("nosbpd stable step");
 }

@@ -99,15 +99,13 @@ static const char *const roles[] = {"fluid", "solid"};
 
 static fsi_case_schema test_schema(fsi_solver_spec *solver)
 {
-    solver->name = "testsolid";
-    solver->role = "solid";
-    solver->executable = "fsi-solid-test";
-    solver->description = "Solid for the geometry test.";
-    solver->key_tables = solid_tables;
-    solver->n_key_tables = 2;
-    solver->objects = fsi_solid_object_kinds;
-    solver->n_objects = fsi_solid_n_object_kinds;
-    solver->check = solid_geometry_check;
+    *solver = (fsi_solver_spec){.name = "testsolid", .role = "solid",
+                                .executable = "fsi-solid-test",
+                                .description = "Solid for the geometry test.",
+                                .key_tables = solid_tables, .n_key_tables = 2,
+                                .objects = fsi_solid_object_kinds,
+                                .n_objects = fsi_solid_n_object_kinds,
+                                .check = solid_geometry_check};
     fsi_case_schema s = {&run_table, 1, &participant_table, roles, 2, solver, 1};
     return s;
 }
@@ -610,8 +608,10 @@ static void test_interface_band(void)
               unpaired == 0, "build: %s", msg);
 
     char text[512];
-    snprintf(text, sizeof text, "[solid]\nspacing = %g\n\n[fluid]\nsolver = ulph\nspacing = %g\n",
-             dx, dx_f);
+    /* support: the fluid's support radius as validation derives it (here ULPH's
+     * default 1.2 * 3 * dx_f); the solid reads it whatever the fluid's solver. */
+    snprintf(text, sizeof text, "[solid]\nspacing = %g\n\n[fluid]\nspacing = %g\nsupport = %.17g\n",
+             dx, dx_f, 1.2 * 3.0 * dx_f);
     fsi_case *c = fsi_case_read(write_case("band.ini", text), stderr);
     CHECK(c != NULL, "cannot read band.ini");
     double spacing_f = 0.0;
