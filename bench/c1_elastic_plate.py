@@ -47,13 +47,13 @@ def main():
             continue
         pr = fsi_results.read_probes(run)
         dx = float(fsi_results.read_case(run)["solid"]["spacing"])
-        runs.append(("dx = %g mm" % (1e3 * dx), pr["time"], pr["corner_ux"],
+        runs.append(("%s, dx = %g mm" % (fsi_results.solvers(run), 1e3 * dx), pr["time"], pr["corner_ux"],
                      fsi_results.wall_time(run), dx))
     with open(a.md, "w") as md:
         md.write("| curve | first peak of u_x | at t | run to | wall time |\n| --- | --- | --- | --- | --- |\n")
         for label, t, u, wall, _ in runs:
             v, tp = first_peak(t, u, 0.35)
-            md.write("| ULPH + NOSB-PD, %s | %.4f m | %.3f s | %.3g s | %s |\n"
+            md.write("| %s | %.4f m | %.3f s | %.3g s | %s |\n"
                      % (label, v, tp, t[-1], "%.0f s" % wall if wall else "did not finish"))
         for label, t, u in refs:
             v, tp = first_peak(t, u, 0.35)
@@ -65,7 +65,7 @@ def main():
     for label, t, u in refs:
         ax.plot(t, u, lw=1, ls="--", label=label)
     for label, t, u, _, _ in runs:
-        ax.plot(t, u, lw=1.6, label="ULPH + NOSB-PD, " + label)
+        ax.plot(t, u, lw=1.6, label=label)
     ax.set_xlim(0, max([r[1][-1] for r in runs] + [0.4]))
     ax.set_xlabel("t [s]")
     ax.set_ylabel("upper-left corner u_x [m]")

@@ -107,7 +107,7 @@ def main():
         peak = {k: (float(u[k].max()), float(t[int(np.argmax(u[k]))])) for k in u}
         ended = t[-1] >= float(case["run"]["end_time"]) - 1e-9
         results.append(dict(run=run, dx=dx, t=t, u=u, err=err, nf=nf, ng=ng, nc=nc, peak=peak,
-                            ended=ended))
+                            ended=ended, solvers=fsi_results.solvers(run)))
         print(f"{run} dx={dx:.6g} T/dx={THICKNESS / dx:.1f} fluid={nf} solid={ng}+{nc} "
               f"t_end={t[-1]:.4f} nrmse_x={err['x'][0]:.4f} ({err['x'][1]} points) "
               f"nrmse_y={err['y'][0]:.4f} ({err['y'][1]} points) "
@@ -138,7 +138,7 @@ def main():
         fig, axes = plt.subplots(1, 2, figsize=(11, 4.4))
         for ax, k, what in zip(axes, ("x", "y"), ("horizontal (downstream)", "vertical (lift)")):
             for r in results:
-                lab = f"ULPH-PD T/dx = {THICKNESS / r['dx']:.0f}"
+                lab = f"{r['solvers']} T/dx = {THICKNESS / r['dx']:.0f}"
                 if r["ended"]:
                     lab += f", NRMSE {100 * r['err'][k][0]:.1f} %"
                 if not r["ended"]:

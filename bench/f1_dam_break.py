@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""F1 dam break: surge front of ULPH runs against Martin & Moyce 1952 (n^2 = 2, a = 2.25 in).
+"""F1 dam break: surge front of the fluid runs against Martin & Moyce 1952 (n^2 = 2, a = 2.25 in).
 
     /usr/bin/python3 bench/f1_dam_break.py [--data CSV] [--png PLOT] [--csv-out FILE] RUN_DIR...
 
@@ -109,7 +109,8 @@ def main():
         import matplotlib.pyplot as plt
         fig, ax = plt.subplots(figsize=(6.4, 4.8))
         for run, dx, a, n, npts, rms, T, Z, _ in results:
-            ax.plot(T, Z, label=f"ULPH a/dx = {a / dx:.0f} ({n} particles), RMS {100 * rms:.1f} %")
+            ax.plot(T, Z, label=f"{fsi_results.solvers(run)} a/dx = {a / dx:.0f} ({n} particles), "
+                                f"RMS {100 * rms:.1f} %")
         ax.plot(T_exp, Z_exp, "ko", label="Martin & Moyce 1952, n$^2$ = 2, a = 2.25 in")
         ax.set_xlabel("T = t sqrt(2 g / a)")
         ax.set_ylabel("Z / a (surge front)")

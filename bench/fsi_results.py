@@ -14,6 +14,14 @@ def read_case(out_dir):
     return {s: dict(parser[s]) for s in parser.sections()}
 
 
+def solvers(out_dir):
+    """The run's solver combination from its resolved case: "ULPH + NOSB-PD", "WCSPH"."""
+    case = read_case(out_dir)
+    names = {"nosbpd": "NOSB-PD"}
+    found = [case[r]["solver"] for r in ("fluid", "solid") if r in case and "solver" in case[r]]
+    return " + ".join(names.get(n, n.upper()) for n in found)
+
+
 def read_probes(out_dir):
     """probes.csv as {column: [floats]}."""
     with open(os.path.join(out_dir, "probes.csv"), newline="") as f:
