@@ -14,6 +14,8 @@
 
 #include <math.h>
 
+#include "fluid_particles.h"
+
 typedef struct {
     double rho0, c0, gamma;
 } tait_eos;
@@ -41,5 +43,12 @@ static inline double tait_eos_density(const tait_eos *e, double p)
     double base = 1.0 + e->gamma * p / (e->rho0 * e->c0 * e->c0);
     return e->rho0 * pow(base > 1e-6 ? base : 1e-6, 1.0 / e->gamma);
 }
+
+/* Every fluid particle's pressure (the equation above) and volume V = m / rho from its
+ * density; without tension a density below rho0 is first raised to rho0 (p >= 0: a
+ * stretched front keeps its stiffness instead of a density deficit that no pressure
+ * restores and that lets it sink into a wall, docs/ulph.md "Tension"). The schemes'
+ * step 1 of every evaluation of the rates. */
+void tait_eos_update_fluid(const tait_eos *e, fluid_particles *p, int tension);
 
 #endif

@@ -180,22 +180,6 @@ double fluid_scheme_support(const fluid_scheme *s)
     return s->kernel.support;
 }
 
-static void fluid_state(const fluid_scheme *s, fluid_particles *p)
-{
-    const int n = p->n;
-#pragma omp parallel for schedule(dynamic, FLUID_CHUNK) if (n >= FLUID_PARALLEL_MIN_PARTICLES)
-    for (int i = 0; i < n; i++)
-        if (p->flags[i] & FLUID_PARTICLE_FLUID) {
-            /* Without tension, p >= 0 (docs/ulph.md "Tension"): a stretched front
-             * keeps its stiffness instead of a density deficit that no pressure
-             * restores and that lets it sink into a wall. */
-            if (!s->tension && p->density[i] < s->eos.rho0)
-                p->density[i] = s->eos.rho0;
-            p->pressure[i] = tait_eos_pressure(&s->eos, p->density[i]);
-            p->volume[i] = p->mass[i] / p->density[i];
-        }
-}
-
 /* 000 Eq. 24, rho_I = sum_J w_IJ m_J / sum_J w_IJ V_J over I and its neighbours (walls
  * included, with the mass of 000 Eq. 54), with a first-order correction:
  *
@@ -246,7 +230,7 @@ int fluid_scheme_rates(fluid_scheme *s, fluid_particles *p, double *drho_dt, dou
         return -1;
     }
     phase_start(s, PHASE_STATE);
-    fluid_state(s, p);
+    tait_eos_update_fluid(&s->eos, p, s->tension);
     phase_stop(s, PHASE_STATE);
     phase_start(s, PHASE_SEARCH);
     int rc = fluid_verlet_update(&s->list, p, s->kernel.support, s->skin) < 0 ? -1 : 0;
@@ -266,7 +250,7 @@ int fluid_scheme_rates(fluid_scheme *s, fluid_particles *p, double *drho_dt, dou
     if (s->filter_due) {
         phase_start(s, PHASE_FILTER);
         density_filter(s, p);
-        fluid_state(s, p);
+        tait_eos_update_fluid(&s->eos, p, s->tension);
         ghost_walls_update(&s->ops.pairs, &s->eos, s->momentum.gravity,
                           s->free_slip, p, s->velocity_for_viscosity);
         s->filter_due = 0;

@@ -180,19 +180,6 @@ double fluid_scheme_support(const fluid_scheme *s)
     return s->kernel.support;
 }
 
-/* 004 Eq. 4 both ways (a weakly compressible liquid under tension near a free surface),
- * V = m / rho. */
-static void fluid_state(const fluid_scheme *s, fluid_particles *p)
-{
-    const int n = p->n;
-#pragma omp parallel for schedule(dynamic, FLUID_CHUNK) if (n >= FLUID_PARALLEL_MIN_PARTICLES)
-    for (int i = 0; i < n; i++)
-        if (p->flags[i] & FLUID_PARTICLE_FLUID) {
-            p->pressure[i] = tait_eos_pressure(&s->eos, p->density[i]);
-            p->volume[i] = p->mass[i] / p->density[i];
-        }
-}
-
 int fluid_scheme_rates(fluid_scheme *s, fluid_particles *p, double *drho_dt, double *dv_dt,
                        char *msg, size_t msg_size)
 {
@@ -201,7 +188,9 @@ int fluid_scheme_rates(fluid_scheme *s, fluid_particles *p, double *drho_dt, dou
         return -1;
     }
     phase(s, PHASE_STATE, 1);
-    fluid_state(s, p);
+    /* 004 Eq. 4 both ways: a weakly compressible liquid under tension near a free
+     * surface. */
+    tait_eos_update_fluid(&s->eos, p, 1);
     phase(s, PHASE_STATE, 0);
     phase(s, PHASE_SEARCH, 1);
     int rc = fluid_verlet_update(&s->list, p, s->kernel.support, s->skin) < 0 ? -1 : 0;
