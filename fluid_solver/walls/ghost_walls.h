@@ -36,4 +36,30 @@ void ghost_walls_update(const fluid_pairs *pairs, const tait_eos *eos, const dou
                        const unsigned char *free_slip, fluid_particles *p,
                        double *velocity_for_viscosity);
 
+/* The same for a scheme that walks its own rows: the sums of one wall particle S over
+ * its fluid neighbours f, then its state from them (ghost_walls_update is these two
+ * over the pair list). */
+typedef struct {
+    double sum_w, sum_pw, head[FSI_DIM], v_mean[FSI_DIM], toward[FSI_DIM];
+} ghost_wall_sums;
+
+/* Fluid particle f at xsf = x_f - x_S with kernel weight w. */
+static inline void ghost_wall_sums_add(ghost_wall_sums *g, const fluid_particles *p, int f,
+                                       double w, const double *xsf)
+{
+    g->sum_w += w;
+    g->sum_pw += p->pressure[f] * w;
+    for (int d = 0; d < FSI_DIM; d++) {
+        g->head[d] -= p->density[f] * xsf[d] * w;
+        g->toward[d] += xsf[d] * w;
+        g->v_mean[d] += p->v[f * FSI_DIM + d] * w;
+    }
+}
+
+/* Pressure, density, mass and velocity_for_viscosity of wall or moving boundary
+ * particle s from its sums (the equations above). */
+void ghost_wall_set(const ghost_wall_sums *g, int s, const tait_eos *eos,
+                    const double *gravity, const unsigned char *free_slip,
+                    fluid_particles *p, double *velocity_for_viscosity);
+
 #endif

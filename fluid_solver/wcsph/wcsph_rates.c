@@ -1,4 +1,5 @@
-/* Continuity, momentum, contact and boundary loads of WCSPH (wcsph_rates.h). */
+/* Walls, gradients, continuity, momentum, contact and boundary loads of WCSPH
+ * (wcsph_rates.h), over the rows of wcsph_rows.h. */
 #include "wcsph_rates.h"
 
 #include <math.h>
@@ -6,15 +7,11 @@
 #include <string.h>
 
 #include "fluid_parallel.h"
-#include "pair_reaction.h"
+#include "ghost_walls.h"
 #include "small_tensor.h"
 #include "soft_contact.h"
 
-/* Bound on the Frobenius condition number of the renormalisation matrix: beyond it (a
- * particle with its neighbours nearly on a line, a lone spray particle) L = 0 and the
- * corrected gradient is zero, so Antuono's term falls back to Molteni's for that pair
- * side rather than amplify noise. Inside a lattice it is 2 (FSI_DIM). */
-#define WCSPH_MAX_CONDITION 1e2
+#define ALWAYS_INLINE inline __attribute__((always_inline))
 
 int wcsph_scratch_reserve(wcsph_scratch *s, int n)
 {
@@ -22,11 +19,14 @@ int wcsph_scratch_reserve(wcsph_scratch *s, int n)
         return 0;
     wcsph_scratch_free(s);
     const size_t m = (size_t)(n > 0 ? n : 1);
-    s->tau_rho2 = malloc(m * FSI_MAT_SIZE * sizeof(double));
-    s->renorm = malloc(m * FSI_MAT_SIZE * sizeof(double));
-    s->density_gradient = malloc(m * FSI_DIM * sizeof(double));
+    s->pressure_rho2 = malloc(m * sizeof(double));
     s->sound = malloc(m * sizeof(double));
-    if (!s->tau_rho2 || !s->renorm || !s->density_gradient || !s->sound) {
+    s->tau_rho2 = malloc(m * FSI_MAT_SIZE * sizeof(double));
+    s->density_gradient = malloc(m * FSI_DIM * sizeof(double));
+    s->renorm_sum = malloc(m * FSI_MAT_SIZE * sizeof(double));
+    s->diffusion = malloc(m * sizeof(double));
+    if (!s->pressure_rho2 || !s->sound || !s->tau_rho2 || !s->density_gradient ||
+        !s->renorm_sum || !s->diffusion) {
         wcsph_scratch_free(s);
         return -1;
     }
@@ -36,98 +36,286 @@ int wcsph_scratch_reserve(wcsph_scratch *s, int n)
 
 void wcsph_scratch_free(wcsph_scratch *s)
 {
-    free(s->tau_rho2);
-    free(s->renorm);
-    free(s->density_gradient);
+    free(s->pressure_rho2);
     free(s->sound);
+    free(s->tau_rho2);
+    free(s->density_gradient);
+    free(s->renorm_sum);
+    free(s->diffusion);
     memset(s, 0, sizeof *s);
 }
 
-void wcsph_gradients(const wcsph_pairs *pl, const wcsph_params *prm, const fluid_particles *p,
-                     const double *u, wcsph_scratch *s)
+static const fsi_periodic *periodic_of(const wcsph_neighbours *nb)
 {
+    return fsi_periodic_any(&nb->list->periodic) ? &nb->list->periodic : NULL;
+}
+
+/* x_IJ = x_J - x_I (nearest image) and |x_IJ|^2: every pass takes a pair's vector from
+ * here, so a pair seen from either row gives the same numbers. */
+static inline double pair_vector(const fsi_periodic *per, const double *x, int i, int j,
+                                 double *rel)
+{
+    double r2 = 0.0;
+    for (int d = 0; d < FSI_DIM; d++)
+        rel[d] = x[(int64_t)j * FSI_DIM + d] - x[(int64_t)i * FSI_DIM + d];
+    if (per)
+        fsi_periodic_min_image(per, rel);
+    for (int d = 0; d < FSI_DIM; d++)
+        r2 += rel[d] * rel[d];
+    return r2;
+}
+
+/* F = (dW/dr) / r of the Wendland C2 kernel inside the support (wendland_c2.h). */
+static inline double kernel_f(const wendland_c2_kernel *k, double r2)
+{
+    const double s = 2.0 - sqrt(r2) * k->inv_h;
+    return k->grad_scale * s * s * s;
+}
+
+/* ---- pass 1: walls ------------------------------------------------------------- */
+
+void wcsph_walls(const wcsph_neighbours *nb, const tait_eos *eos, const double *gravity,
+                 const unsigned char *free_slip, fluid_particles *p, double *u)
+{
+    const fluid_verlet *list = nb->list;
+    const wendland_c2_kernel *k = nb->kernel;
+    const fsi_periodic *per = periodic_of(nb);
     const int n = p->n;
-    const double sound_exponent = 0.5 * (prm->gamma - 1.0);
 #pragma omp parallel for schedule(dynamic, FLUID_CHUNK) if (n >= FLUID_PARALLEL_MIN_PARTICLES)
-    for (int i = 0; i < n; i++) {
-        double b[FSI_MAT_SIZE], grad_u[FSI_MAT_SIZE], grad_rho[FSI_DIM] = {0};
-        fsi_mat_zero(b);
-        fsi_mat_zero(grad_u);
-        const double *u_i = &u[i * FSI_DIM];
-        for (int64_t k = pl->pairs.offset[i]; k < pl->pairs.offset[i + 1]; k++) {
-            const int j = pl->pairs.neighbour[k];
-            if (!wcsph_in_sums(prm, p, j))
-                continue;
-            const double *rel = &pl->rel[k * FSI_DIM];
-            /* V_J grad_I W_IJ = -V_J F x_IJ */
-            double gw[FSI_DIM], du[FSI_DIM];
-            const double vf = -p->volume[j] * pl->f[k];
-            for (int d = 0; d < FSI_DIM; d++) {
-                gw[d] = vf * rel[d];
-                du[d] = u[j * FSI_DIM + d] - u_i[d];
-                grad_rho[d] += (p->density[j] - p->density[i]) * gw[d];
-            }
-            fsi_mat_add_outer(b, 1.0, rel, gw);
-            fsi_mat_add_outer(grad_u, 1.0, du, gw);
+    for (int s = 0; s < n; s++) {
+        if (p->flags[s] & FLUID_PARTICLE_FLUID) {
+            memcpy(&u[s * FSI_DIM], &p->v[s * FSI_DIM], FSI_DIM * sizeof *u);
+            continue;
         }
-        double *L = &s->renorm[(size_t)i * FSI_MAT_SIZE];
-        if (fsi_mat_inverse(b, L, WCSPH_MAX_CONDITION) != 0)
-            fsi_mat_zero(L);
-        /* sum_J (rho_J - rho_I) L grad_I W V_J = L raw; for rho_J - rho_I = G . x_IJ,
-         * raw = B^T G = B G (B is symmetric: grad_I W is parallel to x_IJ), so it is G. */
-        fsi_mat_vec(L, grad_rho, &s->density_gradient[i * FSI_DIM]);
-        double *t = &s->tau_rho2[(size_t)i * FSI_MAT_SIZE];
-        const double scale = prm->laplacian ? 0.0
-                                            : prm->viscosity / (p->density[i] * p->density[i]);
-        for (int a = 0; a < FSI_DIM; a++)
-            for (int c = 0; c < FSI_DIM; c++)
-                FSI_MAT(t, a, c) = scale * (FSI_MAT(grad_u, a, c) + FSI_MAT(grad_u, c, a));
-        const double ratio = p->density[i] / prm->rho0;
-        s->sound[i] = prm->c0 * (sound_exponent == 3.0 ? ratio * ratio * ratio
-                                                       : pow(ratio, sound_exponent));
+        ghost_wall_sums g = {0};
+        for (int64_t c = list->offset[s]; c < list->offset[s + 1]; c++) {
+            const int f = list->candidate[c];
+            if (!(p->flags[f] & FLUID_PARTICLE_FLUID))
+                continue;
+            double xsf[FSI_DIM], w, unused;
+            wendland_c2_eval2(k, pair_vector(per, p->x, s, f, xsf), &w, &unused);
+            if (w > 0.0)
+                ghost_wall_sums_add(&g, p, f, w, xsf);
+        }
+        ghost_wall_set(&g, s, eos, gravity, free_slip, p, u);
     }
 }
 
-/* What every pair term reads. */
+/* ---- pass 2: state and gradients ------------------------------------------------- */
+
+/* One side's share of the gradient sums of a pair: volume V of the other particle,
+ * t = grad W (unweighted), du = u_J - u_I, drho = rho_J - rho_I. */
+static ALWAYS_INLINE void gradient_share(double *grad_u, double *bsum, double *grad_rho,
+                                         double vol, const double *t, const double *du,
+                                         const double *rel, double drho, const int stress,
+                                         const int antuono)
+{
+    for (int a = 0; a < FSI_DIM; a++) {
+        const double ta = vol * t[a];
+        for (int b = 0; b < FSI_DIM; b++) {
+            if (stress)
+                FSI_MAT(grad_u, b, a) += du[b] * ta;
+            if (antuono)
+                FSI_MAT(bsum, b, a) += rel[b] * ta;
+        }
+        if (antuono)
+            grad_rho[a] += drho * ta;
+    }
+}
+
+/* I's side of the gradient sums over the candidates row[lo .. hi-1] in the sums
+ * (a fluid particle's boundary segment, or a wall's or solid particle's full row). */
+static ALWAYS_INLINE void gradient_one_sided(const wcsph_neighbours *nb,
+                                             const wcsph_params *prm,
+                                             const fluid_particles *p, const double *u,
+                                             int i, const int32_t *row, int64_t lo,
+                                             int64_t hi, double *gu, double *bs, double *gr,
+                                             const int stress, const int antuono)
+{
+    const wendland_c2_kernel *k = nb->kernel;
+    const fsi_periodic *per = periodic_of(nb);
+    for (int64_t e = lo; e < hi; e++) {
+        const int j = row[e];
+        if (!wcsph_in_sums(prm, p, j))
+            continue;
+        double rel[FSI_DIM], t[FSI_DIM], du[FSI_DIM];
+        const double r2 = pair_vector(per, p->x, i, j, rel);
+        if (!(r2 < k->support2))
+            continue;
+        const double f = kernel_f(k, r2);
+        for (int d = 0; d < FSI_DIM; d++) {
+            t[d] = -f * rel[d];
+            du[d] = u[j * FSI_DIM + d] - u[i * FSI_DIM + d];
+        }
+        gradient_share(gu, bs, gr, p->volume[j], t, du, rel, p->density[j] - p->density[i],
+                       stress, antuono);
+    }
+}
+
+/* The gradient sums of every pair of the fluid particles of [lo, hi) (their rows:
+ * fluid pairs both ways, boundary pairs on I's side), then of nothing else. */
+static ALWAYS_INLINE void gradient_block(const wcsph_neighbours *nb, const wcsph_params *prm,
+                                         const fluid_particles *p, const double *u,
+                                         wcsph_scratch *s, int lo, int hi, const int stress,
+                                         const int antuono)
+{
+    const wcsph_rows *rows = nb->rows;
+    const wendland_c2_kernel *k = nb->kernel;
+    const fsi_periodic *per = periodic_of(nb);
+    for (int i = lo; i < hi; i++) {
+        if (!(p->flags[i] & FLUID_PARTICLE_FLUID))
+            continue;
+        double gu[FSI_MAT_SIZE] = {0}, bs[FSI_MAT_SIZE] = {0}, gr[FSI_DIM] = {0};
+        const double v_i = p->volume[i], rho_i = p->density[i];
+        for (int64_t e = rows->offset[i]; e < rows->split[i]; e++) {
+            const int j = rows->neighbour[e];
+            double rel[FSI_DIM], t[FSI_DIM], du[FSI_DIM];
+            const double r2 = pair_vector(per, p->x, i, j, rel);
+            if (!(r2 < k->support2))
+                continue;
+            const double f = kernel_f(k, r2);
+            for (int d = 0; d < FSI_DIM; d++) {
+                t[d] = -f * rel[d];
+                du[d] = p->v[j * FSI_DIM + d] - p->v[i * FSI_DIM + d];
+            }
+            const double drho = p->density[j] - rho_i;
+            gradient_share(gu, bs, gr, p->volume[j], t, du, rel, drho, stress, antuono);
+            /* J's side: grad_J W_JI = -t, x_JI = -rel, u_I - u_J = -du. */
+            gradient_share(&s->tau_rho2[(size_t)j * FSI_MAT_SIZE],
+                           &s->renorm_sum[(size_t)j * FSI_MAT_SIZE],
+                           &s->density_gradient[j * FSI_DIM], v_i, t, du, rel, drho, stress,
+                           antuono);
+        }
+        gradient_one_sided(nb, prm, p, u, i, rows->neighbour, rows->split[i],
+                           rows->offset[i + 1], gu, bs, gr, stress, antuono);
+        double *gu_i = &s->tau_rho2[(size_t)i * FSI_MAT_SIZE];
+        double *bs_i = &s->renorm_sum[(size_t)i * FSI_MAT_SIZE];
+        for (int a = 0; a < FSI_MAT_SIZE; a++) {
+            gu_i[a] += gu[a];
+            bs_i[a] += bs[a];
+        }
+        for (int d = 0; d < FSI_DIM; d++)
+            s->density_gradient[i * FSI_DIM + d] += gr[d];
+    }
+}
+
+static void gradient_block_any(const wcsph_neighbours *nb, const wcsph_params *prm,
+                               const fluid_particles *p, const double *u, wcsph_scratch *s,
+                               int lo, int hi, int stress, int antuono)
+{
+    if (stress && antuono)
+        gradient_block(nb, prm, p, u, s, lo, hi, 1, 1);
+    else if (stress)
+        gradient_block(nb, prm, p, u, s, lo, hi, 1, 0);
+    else
+        gradient_block(nb, prm, p, u, s, lo, hi, 0, 1);
+}
+
+void wcsph_gradients(const wcsph_neighbours *nb, const wcsph_params *prm,
+                     const fluid_particles *p, const double *u, wcsph_scratch *s)
+{
+    const int n = p->n, stress = !prm->laplacian, antuono = prm->antuono;
+    const int n_blocks = nb->rows->n_blocks;
+    const int *start = nb->rows->block_start;
+    const double sound_exponent = 0.5 * (prm->gamma - 1.0);
+#pragma omp parallel if (n >= FLUID_PARALLEL_MIN_PARTICLES)
+    {
+#pragma omp for schedule(static)
+        for (int i = 0; i < n; i++) {
+            const double rho = p->density[i], ratio = rho / prm->rho0;
+            s->pressure_rho2[i] = p->pressure[i] / (rho * rho);
+            s->sound[i] = prm->c0 * (sound_exponent == 3.0 ? ratio * ratio * ratio
+                                                           : pow(ratio, sound_exponent));
+            memset(&s->tau_rho2[(size_t)i * FSI_MAT_SIZE], 0, FSI_MAT_SIZE * sizeof(double));
+            memset(&s->renorm_sum[(size_t)i * FSI_MAT_SIZE], 0, FSI_MAT_SIZE * sizeof(double));
+            memset(&s->density_gradient[i * FSI_DIM], 0, FSI_DIM * sizeof(double));
+        }
+        if (stress || antuono) {
+            /* Even blocks, then odd ones (wcsph_rows.h): no two running blocks share a
+             * particle. Wall and solid rows write only their own sums. */
+            for (int parity = 0; parity < 2; parity++) {
+#pragma omp for schedule(dynamic, 1)
+                for (int b = parity; b < n_blocks; b += 2)
+                    gradient_block_any(nb, prm, p, u, s, start[b], start[b + 1], stress,
+                                       antuono);
+            }
+#pragma omp for schedule(dynamic, FLUID_CHUNK)
+            for (int i = 0; i < n; i++)
+                if (!(p->flags[i] & FLUID_PARTICLE_FLUID) && wcsph_in_sums(prm, p, i))
+                    gradient_one_sided(nb, prm, p, u, i, nb->list->candidate,
+                                       nb->list->offset[i], nb->list->offset[i + 1],
+                                       &s->tau_rho2[(size_t)i * FSI_MAT_SIZE],
+                                       &s->renorm_sum[(size_t)i * FSI_MAT_SIZE],
+                                       &s->density_gradient[i * FSI_DIM], stress, antuono);
+#pragma omp for schedule(static)
+            for (int i = 0; i < n; i++) {
+                double *t = &s->tau_rho2[(size_t)i * FSI_MAT_SIZE];
+                double grad_u[FSI_MAT_SIZE];
+                memcpy(grad_u, t, sizeof grad_u);
+                const double scale = stress ? prm->viscosity / (p->density[i] * p->density[i])
+                                            : 0.0;
+                for (int a = 0; a < FSI_DIM; a++)
+                    for (int c = 0; c < FSI_DIM; c++)
+                        FSI_MAT(t, a, c) =
+                            scale * (FSI_MAT(grad_u, a, c) + FSI_MAT(grad_u, c, a));
+                if (antuono) {
+                    /* sum_J (rho_J - rho_I) L grad_I W V_J = L raw; for rho_J - rho_I =
+                     * G . x_IJ, raw = B^T G = B G (B is symmetric: grad_I W is
+                     * parallel to x_IJ), so it is G. */
+                    double L[FSI_MAT_SIZE], raw[FSI_DIM];
+                    if (fsi_mat_inverse(&s->renorm_sum[(size_t)i * FSI_MAT_SIZE], L,
+                                        WCSPH_MAX_CONDITION) != 0)
+                        fsi_mat_zero(L);
+                    memcpy(raw, &s->density_gradient[i * FSI_DIM], sizeof raw);
+                    fsi_mat_vec(L, raw, &s->density_gradient[i * FSI_DIM]);
+                }
+            }
+        }
+    }
+}
+
+/* ---- pass 3: rates ------------------------------------------------------------- */
+
+/* What every boundary pair term reads. */
 typedef struct {
-    const wcsph_pairs *pl;
     const wcsph_params *prm;
     const fluid_particles *p;
     const double *u;
     const wcsph_scratch *s;
+    const wendland_c2_kernel *k;
     double eps2, contact_k_c2, contact_inv_eta_scale;
 } pair_context;
 
-static pair_context make_context(const wcsph_pairs *pl, const wcsph_params *prm,
+static pair_context make_context(const wcsph_neighbours *nb, const wcsph_params *prm,
                                  const fluid_particles *p, const double *u,
                                  const wcsph_scratch *s)
 {
-    return (pair_context){pl, prm, p, u, s, 0.01 * prm->h * prm->h,
+    return (pair_context){prm, p, u, s, nb->kernel, 0.01 * prm->h * prm->h,
                           prm->contact * prm->c0 * prm->c0, 1.0 / (0.75 * prm->h)};
 }
 
-/* The acceleration of fluid particle I from neighbour J (entry k of I's row), gravity
- * excluded; the force on I is m_I times it. */
-static inline void pair_acceleration(const pair_context *c, int i, int64_t k, double *out)
+/* The acceleration of fluid particle I from boundary (wall or solid) particle J at
+ * x_IJ = rel within the support, gravity excluded (the force on I is m_I times it),
+ * and with J in the sums its continuity and diffusion terms (without delta h c0). */
+static inline void boundary_pair(const pair_context *c, int i, int j, const double *rel,
+                                 double r2, double *out, double *div, double *diff)
 {
     const fluid_particles *p = c->p;
     const wcsph_params *prm = c->prm;
-    const int j = c->pl->pairs.neighbour[k];
-    const double *rel = &c->pl->rel[k * FSI_DIM];
-    double r2 = 0.0;
-    for (int d = 0; d < FSI_DIM; d++) {
-        r2 += rel[d] * rel[d];
+    for (int d = 0; d < FSI_DIM; d++)
         out[d] = 0.0;
-    }
-    const int fluid_j = p->flags[j] & FLUID_PARTICLE_FLUID;
+    *div = *diff = 0.0;
     if (wcsph_in_sums(prm, p, j)) {
-        const double f = c->pl->f[k], m_j = p->mass[j];
+        const double f = kernel_f(c->k, r2), m_j = p->mass[j];
         const double rho_i = p->density[i], rho_j = p->density[j];
-        const double p_i = fluid_j ? p->pressure[i] : fmax(p->pressure[i], 0.0);
+        /* a wall pushes, never pulls: max(p_I, 0) / rho_I^2 */
+        const double p_i = fmax(c->s->pressure_rho2[i], 0.0);
         /* v_IJ . (x_I - x_J) = (u_J - u_I) . x_IJ */
-        double vx = 0.0;
-        for (int d = 0; d < FSI_DIM; d++)
-            vx += (c->u[j * FSI_DIM + d] - c->u[i * FSI_DIM + d]) * rel[d];
+        double vx = 0.0, cont = 0.0;
+        for (int d = 0; d < FSI_DIM; d++) {
+            vx += (c->u[j * FSI_DIM + d] - p->v[i * FSI_DIM + d]) * rel[d];
+            cont += (p->v[j * FSI_DIM + d] - p->v[i * FSI_DIM + d]) * rel[d];
+        }
         double pi_ij = 0.0;
         if (vx < 0.0) {
             const double mu = prm->h * vx / (r2 + c->eps2);
@@ -135,8 +323,7 @@ static inline void pair_acceleration(const pair_context *c, int i, int64_t k, do
                      prm->beta2 * mu * mu) / (0.5 * (rho_i + rho_j));
         }
         /* -m_J (P_I + P_J + pi_IJ) grad_I W = m_J (P_I + P_J + pi_IJ) F x_IJ */
-        const double radial = m_j * f * (p_i / (rho_i * rho_i) + p->pressure[j] / (rho_j * rho_j) +
-                                         pi_ij);
+        const double radial = m_j * f * (p_i + c->s->pressure_rho2[j] + pi_ij);
         for (int d = 0; d < FSI_DIM; d++)
             out[d] += radial * rel[d];
         if (prm->laplacian) {
@@ -144,7 +331,7 @@ static inline void pair_acceleration(const pair_context *c, int i, int64_t k, do
             const double lap = m_j * 2.0 * prm->viscosity * f * r2 /
                                (rho_i * rho_j * (r2 + c->eps2));
             for (int d = 0; d < FSI_DIM; d++)
-                out[d] += lap * (c->u[i * FSI_DIM + d] - c->u[j * FSI_DIM + d]);
+                out[d] += lap * (p->v[i * FSI_DIM + d] - c->u[j * FSI_DIM + d]);
         } else {
             /* m_J (T_I + T_J) grad_I W = -m_J F (T_I + T_J) x_IJ */
             const double *ti = &c->s->tau_rho2[(size_t)i * FSI_MAT_SIZE];
@@ -155,6 +342,22 @@ static inline void pair_acceleration(const pair_context *c, int i, int64_t k, do
                     sum += (FSI_MAT(ti, a, b) + FSI_MAT(tj, a, b)) * rel[b];
                 out[a] -= m_j * f * sum;
             }
+        }
+        /* m_J (v_I - v_J) . grad_I W = m_J F (v_J - v_I) . x_IJ */
+        *div = m_j * f * cont;
+        const double v_f = p->volume[j] * f, drho = rho_j - rho_i;
+        if (prm->antuono) {
+            /* A wall or solid particle's own gradient is not the fluid's (its outer
+             * layers, beyond the fluid's reach, hold rho0): the fluid particle's
+             * stands in for it. psi . grad_I W = -F (2 (rho_J - rho_I) - 2 G_I . x_IJ) */
+            const double *gi = &c->s->density_gradient[i * FSI_DIM];
+            double proj = 0.0;
+            for (int d = 0; d < FSI_DIM; d++)
+                proj += 2.0 * gi[d] * rel[d];
+            *diff = r2 > 0.0 ? -v_f * (2.0 * drho - proj) : 0.0;
+        } else {
+            /* 2 V_J (rho_I - rho_J) F r^2 / (r^2 + 0.01 h^2) */
+            *diff = -2.0 * v_f * drho * r2 / (r2 + c->eps2);
         }
     }
     if ((p->flags[j] & FLUID_PARTICLE_MOVING_BOUNDARY) && c->contact_k_c2 > 0.0) {
@@ -170,116 +373,251 @@ static inline void pair_acceleration(const pair_context *c, int i, int64_t k, do
     }
 }
 
-/* delta h c0 times the diffusion of pair k of I's row (in the sums). */
-static inline double pair_diffusion(const pair_context *c, int i, int64_t k)
+/* The rates' sums of the fluid particles of [lo, hi): each fluid pair once, written to
+ * both particles (antisymmetric terms, wcsph_rows.h), each boundary pair on I's side.
+ * Returns the pairs within the support. */
+static ALWAYS_INLINE long long rates_block(const wcsph_neighbours *nb, const pair_context *c,
+                                           double *drho_dt, double *dv_dt, double *diffusion,
+                                           int lo, int hi, const int stress,
+                                           const int antuono)
 {
+    const wcsph_rows *rows = nb->rows;
+    const wendland_c2_kernel *k = nb->kernel;
+    const fsi_periodic *per = periodic_of(nb);
     const fluid_particles *p = c->p;
-    const int j = c->pl->pairs.neighbour[k];
-    const double *rel = &c->pl->rel[k * FSI_DIM];
-    double r2 = 0.0;
-    for (int d = 0; d < FSI_DIM; d++)
-        r2 += rel[d] * rel[d];
-    const double v_f = p->volume[j] * c->pl->f[k], drho = p->density[j] - p->density[i];
-    if (c->prm->antuono) {
-        if (!(r2 > 0.0))
-            return 0.0;
-        /* psi . grad_I W = -F (2 (rho_J - rho_I) - (G_I + G_J) . x_IJ). A wall or
-         * solid particle's own gradient is not the fluid's (its outer layers, beyond
-         * the fluid's reach, hold rho0): the fluid particle's stands in for it. */
-        const double *gi = &c->s->density_gradient[i * FSI_DIM];
-        const double *gj = (p->flags[j] & FLUID_PARTICLE_FLUID)
-                               ? &c->s->density_gradient[j * FSI_DIM] : gi;
-        double proj = 0.0;
+    const wcsph_params *prm = c->prm;
+    const wcsph_scratch *s = c->s;
+    const double h = prm->h, beta1 = 0.5 * prm->beta1, beta2 = prm->beta2, eps2 = c->eps2;
+    const double lap_scale = 2.0 * prm->viscosity;
+    long long pairs = 0;
+    for (int i = lo; i < hi; i++) {
+        if (!(p->flags[i] & FLUID_PARTICLE_FLUID))
+            continue;
+        const double rho_i = p->density[i], m_i = p->mass[i], vol_i = p->volume[i];
+        const double pr_i = s->pressure_rho2[i], c_i = s->sound[i];
+        const double *v_i = &p->v[i * FSI_DIM];
+        const double *t_i = &s->tau_rho2[(size_t)i * FSI_MAT_SIZE];
+        const double *g_i = &s->density_gradient[i * FSI_DIM];
+        double acc[FSI_DIM] = {0}, div = 0.0, diff = 0.0;
+        for (int64_t e = rows->offset[i]; e < rows->split[i]; e++) {
+            const int j = rows->neighbour[e];
+            double rel[FSI_DIM], dv[FSI_DIM], x[FSI_DIM];
+            const double r2 = pair_vector(per, p->x, i, j, rel);
+            if (!(r2 < k->support2))
+                continue;
+            pairs++;
+            const double f = kernel_f(k, r2), rho_j = p->density[j];
+            double vx = 0.0;
+            for (int d = 0; d < FSI_DIM; d++) {
+                dv[d] = p->v[j * FSI_DIM + d] - v_i[d];
+                vx += dv[d] * rel[d];
+            }
+            /* 004 Eqs. 8-9: only approaching pairs (mu = 0 otherwise) */
+            const double mu = h * fmin(vx, 0.0) / (r2 + eps2);
+            const double pi_ij = (-beta1 * (c_i + s->sound[j]) * mu + beta2 * mu * mu) /
+                                 (0.5 * (rho_i + rho_j));
+            const double radial = f * (pr_i + s->pressure_rho2[j] + pi_ij);
+            for (int d = 0; d < FSI_DIM; d++)
+                x[d] = radial * rel[d];
+            if (stress) {
+                const double *t_j = &s->tau_rho2[(size_t)j * FSI_MAT_SIZE];
+                for (int a = 0; a < FSI_DIM; a++) {
+                    double sum = 0.0;
+                    for (int b = 0; b < FSI_DIM; b++)
+                        sum += (FSI_MAT(t_i, a, b) + FSI_MAT(t_j, a, b)) * rel[b];
+                    x[a] -= f * sum;
+                }
+            } else {
+                const double lap = lap_scale * f * r2 / (rho_i * rho_j * (r2 + eps2));
+                for (int d = 0; d < FSI_DIM; d++)
+                    x[d] -= lap * dv[d];
+            }
+            const double m_j = p->mass[j];
+            for (int d = 0; d < FSI_DIM; d++) {
+                acc[d] += m_j * x[d];
+                dv_dt[j * FSI_DIM + d] -= m_i * x[d];
+            }
+            const double cont = f * vx;
+            div += m_j * cont;
+            drho_dt[j] += m_i * cont;
+            const double drho = rho_j - rho_i;
+            double t;
+            if (antuono) {
+                const double *g_j = &s->density_gradient[j * FSI_DIM];
+                double proj = 0.0;
+                for (int d = 0; d < FSI_DIM; d++)
+                    proj += (g_i[d] + g_j[d]) * rel[d];
+                t = r2 > 0.0 ? -f * (2.0 * drho - proj) : 0.0;
+            } else {
+                t = -2.0 * f * drho * r2 / (r2 + eps2);
+            }
+            diff += p->volume[j] * t;
+            diffusion[j] -= vol_i * t;
+        }
+        for (int64_t e = rows->split[i]; e < rows->offset[i + 1]; e++) {
+            const int j = rows->neighbour[e];
+            double rel[FSI_DIM], a[FSI_DIM], d_div, d_diff;
+            const double r2 = pair_vector(per, p->x, i, j, rel);
+            if (!(r2 < k->support2))
+                continue;
+            pairs++;
+            boundary_pair(c, i, j, rel, r2, a, &d_div, &d_diff);
+            for (int d = 0; d < FSI_DIM; d++)
+                acc[d] += a[d];
+            div += d_div;
+            diff += d_diff;
+        }
         for (int d = 0; d < FSI_DIM; d++)
-            proj += (gi[d] + gj[d]) * rel[d];
-        return -v_f * (2.0 * drho - proj);
+            dv_dt[i * FSI_DIM + d] += acc[d];
+        drho_dt[i] += div;
+        diffusion[i] += diff;
     }
-    /* 2 V_J (rho_I - rho_J) F r^2 / (r^2 + 0.01 h^2) */
-    return -2.0 * v_f * drho * r2 / (r2 + c->eps2);
+    return pairs;
 }
 
-void wcsph_density_diffusion(const wcsph_pairs *pl, const wcsph_params *prm,
+static long long rates_block_any(const wcsph_neighbours *nb, const pair_context *c,
+                                 double *drho_dt, double *dv_dt, double *diffusion, int lo,
+                                 int hi)
+{
+    const int stress = !c->prm->laplacian, antuono = c->prm->antuono;
+    if (stress && antuono)
+        return rates_block(nb, c, drho_dt, dv_dt, diffusion, lo, hi, 1, 1);
+    if (stress)
+        return rates_block(nb, c, drho_dt, dv_dt, diffusion, lo, hi, 1, 0);
+    if (antuono)
+        return rates_block(nb, c, drho_dt, dv_dt, diffusion, lo, hi, 0, 1);
+    return rates_block(nb, c, drho_dt, dv_dt, diffusion, lo, hi, 0, 0);
+}
+
+void wcsph_rates(const wcsph_neighbours *nb, const wcsph_params *prm, const fluid_particles *p,
+                 const double *u, wcsph_scratch *s, double *drho_dt, double *dv_dt)
+{
+    const pair_context c = make_context(nb, prm, p, u, s);
+    const double scale = prm->delta * prm->h * prm->c0;
+    const int n = p->n, n_blocks = nb->rows->n_blocks;
+    const int *start = nb->rows->block_start;
+    double *diffusion = s->diffusion;
+    long long pairs = 0;
+#pragma omp parallel if (n >= FLUID_PARALLEL_MIN_PARTICLES)
+    {
+#pragma omp for schedule(static)
+        for (int i = 0; i < n; i++) {
+            drho_dt[i] = diffusion[i] = 0.0;
+            memset(&dv_dt[i * FSI_DIM], 0, FSI_DIM * sizeof *dv_dt);
+        }
+        /* Even blocks, then odd ones (wcsph_rows.h). */
+        for (int parity = 0; parity < 2; parity++) {
+#pragma omp for schedule(dynamic, 1) reduction(+ : pairs)
+            for (int b = parity; b < n_blocks; b += 2)
+                pairs += rates_block_any(nb, &c, drho_dt, dv_dt, diffusion, start[b],
+                                         start[b + 1]);
+        }
+#pragma omp for schedule(static)
+        for (int i = 0; i < n; i++) {
+            if (!(p->flags[i] & FLUID_PARTICLE_FLUID))
+                continue;
+            drho_dt[i] += scale * diffusion[i];
+            for (int d = 0; d < FSI_DIM; d++)
+                dv_dt[i * FSI_DIM + d] += prm->gravity[d];
+        }
+    }
+    /* directed pairs, as the other schemes count them */
+    s->pairs = 2 * pairs;
+}
+
+/* ---- reference sums and loads ---------------------------------------------------- */
+
+void wcsph_density_diffusion(const wcsph_neighbours *nb, const wcsph_params *prm,
                              const fluid_particles *p, const wcsph_scratch *s, double *out)
 {
-    const pair_context c = make_context(pl, prm, p, NULL, s);
+    const pair_context c = make_context(nb, prm, p, NULL, s);
+    const fluid_verlet *list = nb->list;
+    const fsi_periodic *per = periodic_of(nb);
     const double scale = prm->delta * prm->h * prm->c0;
     const int n = p->n;
 #pragma omp parallel for schedule(dynamic, FLUID_CHUNK) if (n >= FLUID_PARALLEL_MIN_PARTICLES)
     for (int i = 0; i < n; i++) {
         double sum = 0.0;
-        if (p->flags[i] & FLUID_PARTICLE_FLUID)
-            for (int64_t k = pl->pairs.offset[i]; k < pl->pairs.offset[i + 1]; k++)
-                if (wcsph_in_sums(prm, p, pl->pairs.neighbour[k]))
-                    sum += pair_diffusion(&c, i, k);
+        for (int64_t e = list->offset[i];
+             (p->flags[i] & FLUID_PARTICLE_FLUID) && e < list->offset[i + 1]; e++) {
+            const int j = list->candidate[e];
+            double rel[FSI_DIM];
+            const double r2 = pair_vector(per, p->x, i, j, rel);
+            if (!(r2 < nb->kernel->support2) || !wcsph_in_sums(prm, p, j))
+                continue;
+            const double f = kernel_f(nb->kernel, r2), drho = p->density[j] - p->density[i];
+            const double *gi = &s->density_gradient[i * FSI_DIM];
+            const double *gj = (p->flags[j] & FLUID_PARTICLE_FLUID)
+                                   ? &s->density_gradient[j * FSI_DIM] : gi;
+            double proj = 0.0;
+            for (int d = 0; d < FSI_DIM; d++)
+                proj += (gi[d] + gj[d]) * rel[d];
+            if (prm->antuono)
+                sum += r2 > 0.0 ? -p->volume[j] * f * (2.0 * drho - proj) : 0.0;
+            else
+                sum += -2.0 * p->volume[j] * f * drho * r2 / (r2 + c.eps2);
+        }
         out[i] = scale * sum;
     }
 }
 
-void wcsph_rates(const wcsph_pairs *pl, const wcsph_params *prm, const fluid_particles *p,
-                 const double *u, const wcsph_scratch *s, double *drho_dt, double *dv_dt)
-{
-    const pair_context c = make_context(pl, prm, p, u, s);
-    const double diffusion = prm->delta * prm->h * prm->c0;
-    const int n = p->n;
-#pragma omp parallel for schedule(dynamic, FLUID_CHUNK) if (n >= FLUID_PARALLEL_MIN_PARTICLES)
-    for (int i = 0; i < n; i++) {
-        double *a_i = &dv_dt[i * FSI_DIM];
-        drho_dt[i] = 0.0;
-        memset(a_i, 0, FSI_DIM * sizeof *a_i);
-        if (!(p->flags[i] & FLUID_PARTICLE_FLUID))
-            continue;
-        double acc[FSI_DIM] = {0}, div = 0.0, diff = 0.0;
-        for (int64_t k = pl->pairs.offset[i]; k < pl->pairs.offset[i + 1]; k++) {
-            const int j = pl->pairs.neighbour[k];
-            double a[FSI_DIM];
-            pair_acceleration(&c, i, k, a);
-            for (int d = 0; d < FSI_DIM; d++)
-                acc[d] += a[d];
-            if (!wcsph_in_sums(prm, p, j))
-                continue;
-            /* m_J (v_I - v_J) . grad_I W = m_J F (v_J - v_I) . x_IJ */
-            const double *rel = &pl->rel[k * FSI_DIM];
-            double vx = 0.0;
-            for (int d = 0; d < FSI_DIM; d++)
-                vx += (p->v[j * FSI_DIM + d] - p->v[i * FSI_DIM + d]) * rel[d];
-            div += p->mass[j] * pl->f[k] * vx;
-            if (diffusion > 0.0)
-                diff += pair_diffusion(&c, i, k);
-        }
-        drho_dt[i] = div + diffusion * diff;
-        for (int d = 0; d < FSI_DIM; d++)
-            a_i[d] = acc[d] + prm->gravity[d];
-    }
-}
-
-static void pair_term(const void *context, int i, int64_t k, double *out)
-{
-    pair_acceleration(context, i, k, out);
-}
-
-void wcsph_boundary_loads(const wcsph_pairs *pl, const wcsph_params *prm,
+void wcsph_boundary_loads(const wcsph_neighbours *nb, const wcsph_params *prm,
                           const fluid_particles *p, const double *u, const wcsph_scratch *s,
                           double *force)
 {
-    const pair_context c = make_context(pl, prm, p, u, s);
-    fluid_pair_reaction(&pl->pairs, p, p->mass, pair_term, &c, force);
+    const pair_context c = make_context(nb, prm, p, u, s);
+    const fluid_verlet *list = nb->list;
+    const fsi_periodic *per = periodic_of(nb);
+    const int n = p->n;
+#pragma omp parallel for schedule(dynamic, FLUID_CHUNK) if (n >= FLUID_PARALLEL_MIN_PARTICLES)
+    for (int b = 0; b < n; b++) {
+        double *f_b = &force[b * FSI_DIM];
+        memset(f_b, 0, FSI_DIM * sizeof *f_b);
+        if (!(p->flags[b] & FLUID_PARTICLE_MOVING_BOUNDARY))
+            continue;
+        for (int64_t e = list->offset[b]; e < list->offset[b + 1]; e++) {
+            const int i = list->candidate[e];
+            if (!(p->flags[i] & FLUID_PARTICLE_FLUID))
+                continue;
+            /* the pair as I's row sees it */
+            double rel[FSI_DIM], a[FSI_DIM], d_div, d_diff;
+            const double r2 = pair_vector(per, p->x, i, b, rel);
+            if (!(r2 < nb->kernel->support2))
+                continue;
+            boundary_pair(&c, i, b, rel, r2, a, &d_div, &d_diff);
+            for (int d = 0; d < FSI_DIM; d++)
+                f_b[d] -= p->mass[i] * a[d];
+        }
+    }
 }
 
-void wcsph_gradient(const wcsph_pairs *pl, const wcsph_params *prm, const fluid_particles *p,
-                    const wcsph_scratch *s, const double *f, double *grad)
+void wcsph_gradient(const wcsph_neighbours *nb, const wcsph_params *prm,
+                    const fluid_particles *p, const double *f, double *grad)
 {
+    const fluid_verlet *list = nb->list;
+    const fsi_periodic *per = periodic_of(nb);
     const int n = p->n;
 #pragma omp parallel for schedule(dynamic, FLUID_CHUNK) if (n >= FLUID_PARALLEL_MIN_PARTICLES)
     for (int i = 0; i < n; i++) {
-        double raw[FSI_DIM] = {0};
-        for (int64_t k = pl->pairs.offset[i]; k < pl->pairs.offset[i + 1]; k++) {
-            const int j = pl->pairs.neighbour[k];
-            if (!wcsph_in_sums(prm, p, j))
+        double b[FSI_MAT_SIZE], L[FSI_MAT_SIZE], raw[FSI_DIM] = {0};
+        fsi_mat_zero(b);
+        for (int64_t e = list->offset[i]; e < list->offset[i + 1]; e++) {
+            const int j = list->candidate[e];
+            double rel[FSI_DIM];
+            const double r2 = pair_vector(per, p->x, i, j, rel);
+            if (!(r2 < nb->kernel->support2) || !wcsph_in_sums(prm, p, j))
                 continue;
-            const double vf = -p->volume[j] * pl->f[k] * (f[j] - f[i]);
-            for (int d = 0; d < FSI_DIM; d++)
-                raw[d] += vf * pl->rel[k * FSI_DIM + d];
+            /* V_J grad_I W_IJ = -V_J F x_IJ */
+            const double vf = -p->volume[j] * kernel_f(nb->kernel, r2);
+            double gw[FSI_DIM];
+            for (int d = 0; d < FSI_DIM; d++) {
+                gw[d] = vf * rel[d];
+                raw[d] += (f[j] - f[i]) * gw[d];
+            }
+            fsi_mat_add_outer(b, 1.0, rel, gw);
         }
-        fsi_mat_vec(&s->renorm[(size_t)i * FSI_MAT_SIZE], raw, &grad[i * FSI_DIM]);
+        if (fsi_mat_inverse(b, L, WCSPH_MAX_CONDITION) != 0)
+            fsi_mat_zero(L);
+        fsi_mat_vec(L, raw, &grad[i * FSI_DIM]);
     }
 }

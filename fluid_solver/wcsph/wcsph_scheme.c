@@ -1,12 +1,13 @@
 /* The WCSPH scheme behind fluid_scheme.h (004 §2, docs/wcsph.md): one evaluation of the
  * rates is
  *   1. pressure and volume of every fluid particle from its density (Tait, 004 Eq. 4);
- *   2. the pairs within 2h from the Verlet candidates (wcsph_pairs), W and dW/dr of the
- *      Wendland C2 kernel (004 Eq. 5);
+ *   2. the Verlet candidates (neighbours/verlet_list.h) and, at each of their builds,
+ *      the scheme's rows (wcsph_rows.h: each fluid pair once);
  *   3. the dummy wall particles, and the solid's particles when they are dummies, from
  *      the fluid around them (004 Eqs. 10-11, walls/ghost_walls.h);
- *   4. renormalised density gradient, viscous stress, sound speed (wcsph_gradients);
+ *   4. sound speed, viscous stress and renormalised density gradient (wcsph_gradients);
  *   5. continuity with density diffusion and momentum (004 Eqs. 6-9, wcsph_rates).
+ * The Wendland C2 kernel (004 Eq. 5) is evaluated in the passes, pair by pair.
  * Steps with the shared predictor-corrector (004 §4) or the Verlet scheme. */
 #include <math.h>
 #include <stdio.h>
@@ -16,21 +17,19 @@
 #include "fluid_scheme.h"
 #include "fluid_parallel.h"
 #include "fluid_step.h"
-#include "ghost_walls.h"
 #include "grow.h"
 #include "small_tensor.h"
 #include "tait_eos.h"
 #include "wc_predictor_corrector.h"
 #include "wc_verlet.h"
 #include "wcsph_keys.h"
-#include "wcsph_pairs.h"
 #include "wcsph_rates.h"
 #include "wendland_c2.h"
 
-enum { PHASE_SEARCH, PHASE_PAIRS, PHASE_STATE, PHASE_WALLS, PHASE_GRADIENTS, PHASE_MOMENTUM,
+enum { PHASE_SEARCH, PHASE_ROWS, PHASE_STATE, PHASE_WALLS, PHASE_GRADIENTS, PHASE_MOMENTUM,
        N_PHASES };
 static const char *const phase_name[N_PHASES] = {
-    "rates: neighbour search", "rates: pairs", "rates: equation of state", "rates: walls",
+    "rates: neighbour search", "rates: rows", "rates: equation of state", "rates: walls",
     "rates: gradients", "rates: momentum"};
 
 struct fluid_scheme {
@@ -39,7 +38,7 @@ struct fluid_scheme {
     wcsph_params prm;
     fluid_verlet list;
     double skin;                /* of the candidate lists [m] */
-    wcsph_pairs pairs;
+    wcsph_rows rows;
     wcsph_scratch scratch;
     const unsigned char *free_slip;
     double *velocity_for_viscosity;
@@ -138,7 +137,7 @@ fluid_scheme *fluid_scheme_create(const fsi_case *c, const char *role,
     s->skin = fsi_case_get_real(c, own, "neighbour_skin", FLUID_VERLET_SKIN) * s->kernel.support;
     fluid_verlet_init(&s->list);
     fsi_grid_set_periodic(&s->list.grid, &props->periodic);
-    wcsph_pairs_init(&s->pairs);
+    wcsph_rows_init(&s->rows);
     if (reserve(s, p->n) != 0) {
         fluid_scheme_free(s);
         snprintf(msg, msg_size, "out of memory for the WCSPH scheme of %d particles", p->n);
@@ -152,7 +151,7 @@ void fluid_scheme_free(fluid_scheme *s)
     if (!s)
         return;
     fluid_verlet_free(&s->list);
-    wcsph_pairs_free(&s->pairs);
+    wcsph_rows_free(&s->rows);
     wcsph_scratch_free(&s->scratch);
     fluid_wc_integrator_free(&s->predictor_corrector);
     fluid_wc_verlet_free(&s->verlet_integrator);
@@ -180,6 +179,11 @@ double fluid_scheme_support(const fluid_scheme *s)
     return s->kernel.support;
 }
 
+static wcsph_neighbours neighbours(const fluid_scheme *s)
+{
+    return (wcsph_neighbours){&s->list, &s->rows, &s->kernel};
+}
+
 int fluid_scheme_rates(fluid_scheme *s, fluid_particles *p, double *drho_dt, double *dv_dt,
                        char *msg, size_t msg_size)
 {
@@ -193,25 +197,25 @@ int fluid_scheme_rates(fluid_scheme *s, fluid_particles *p, double *drho_dt, dou
     tait_eos_update_fluid(&s->eos, p, 1);
     phase(s, PHASE_STATE, 0);
     phase(s, PHASE_SEARCH, 1);
-    int rc = fluid_verlet_update(&s->list, p, s->kernel.support, s->skin) < 0 ? -1 : 0;
+    const int built = fluid_verlet_update(&s->list, p, s->kernel.support, s->skin);
     phase(s, PHASE_SEARCH, 0);
-    phase(s, PHASE_PAIRS, 1);
-    rc = rc != 0 ? rc : wcsph_pairs_update(&s->pairs, &s->kernel, &s->list, p);
-    phase(s, PHASE_PAIRS, 0);
+    phase(s, PHASE_ROWS, 1);
+    const int rc = built < 0 ? -1 : built > 0 ? wcsph_rows_build(&s->rows, &s->list, p) : 0;
+    phase(s, PHASE_ROWS, 0);
     if (rc != 0) {
         snprintf(msg, msg_size, "cannot build the neighbour lists of %d particles (a "
                  "position is not finite, or memory ran out)", p->n);
         return -1;
     }
+    const wcsph_neighbours nb = neighbours(s);
     phase(s, PHASE_WALLS, 1);
-    ghost_walls_update(&s->pairs.pairs, &s->eos, s->prm.gravity, s->free_slip, p,
-                       s->velocity_for_viscosity);
+    wcsph_walls(&nb, &s->eos, s->prm.gravity, s->free_slip, p, s->velocity_for_viscosity);
     phase(s, PHASE_WALLS, 0);
     phase(s, PHASE_GRADIENTS, 1);
-    wcsph_gradients(&s->pairs, &s->prm, p, s->velocity_for_viscosity, &s->scratch);
+    wcsph_gradients(&nb, &s->prm, p, s->velocity_for_viscosity, &s->scratch);
     phase(s, PHASE_GRADIENTS, 0);
     phase(s, PHASE_MOMENTUM, 1);
-    wcsph_rates(&s->pairs, &s->prm, p, s->velocity_for_viscosity, &s->scratch, drho_dt, dv_dt);
+    wcsph_rates(&nb, &s->prm, p, s->velocity_for_viscosity, &s->scratch, drho_dt, dv_dt);
     phase(s, PHASE_MOMENTUM, 0);
     return 0;
 }
@@ -239,13 +243,15 @@ double fluid_scheme_stable_dt(const fluid_scheme *s, const fluid_particles *p, d
 void fluid_scheme_pressure_gradient(const fluid_scheme *s, const fluid_particles *p,
                                     double *grad)
 {
-    wcsph_gradient(&s->pairs, &s->prm, p, &s->scratch, p->pressure, grad);
+    const wcsph_neighbours nb = neighbours(s);
+    wcsph_gradient(&nb, &s->prm, p, p->pressure, grad);
 }
 
 void fluid_scheme_boundary_loads(const fluid_scheme *s, const fluid_particles *p,
                                  double *force)
 {
-    wcsph_boundary_loads(&s->pairs, &s->prm, p, s->velocity_for_viscosity, &s->scratch, force);
+    const wcsph_neighbours nb = neighbours(s);
+    wcsph_boundary_loads(&nb, &s->prm, p, s->velocity_for_viscosity, &s->scratch, force);
 }
 
 int fluid_scheme_write_fields(const fluid_scheme *s, fsi_h5_writer *out)
@@ -257,5 +263,5 @@ int fluid_scheme_write_fields(const fluid_scheme *s, fsi_h5_writer *out)
 
 long long fluid_scheme_pair_count(const fluid_scheme *s)
 {
-    return (long long)s->pairs.pairs.n_pairs;
+    return s->scratch.pairs;
 }
