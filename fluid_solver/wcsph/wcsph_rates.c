@@ -50,28 +50,6 @@ static const fsi_periodic *periodic_of(const wcsph_neighbours *nb)
     return fsi_periodic_any(&nb->list->periodic) ? &nb->list->periodic : NULL;
 }
 
-/* x_IJ = x_J - x_I (nearest image) and |x_IJ|^2: every pass takes a pair's vector from
- * here, so a pair seen from either row gives the same numbers. */
-static inline double pair_vector(const fsi_periodic *per, const double *x, int i, int j,
-                                 double *rel)
-{
-    double r2 = 0.0;
-    for (int d = 0; d < FSI_DIM; d++)
-        rel[d] = x[(int64_t)j * FSI_DIM + d] - x[(int64_t)i * FSI_DIM + d];
-    if (per)
-        fsi_periodic_min_image(per, rel);
-    for (int d = 0; d < FSI_DIM; d++)
-        r2 += rel[d] * rel[d];
-    return r2;
-}
-
-/* F = (dW/dr) / r of the Wendland C2 kernel inside the support (wendland_c2.h). */
-static inline double kernel_f(const wendland_c2_kernel *k, double r2)
-{
-    const double s = 2.0 - sqrt(r2) * k->inv_h;
-    return k->grad_scale * s * s * s;
-}
-
 /* ---- pass 1: walls ------------------------------------------------------------- */
 
 void wcsph_walls(const wcsph_neighbours *nb, const tait_eos *eos, const double *gravity,
@@ -93,7 +71,7 @@ void wcsph_walls(const wcsph_neighbours *nb, const tait_eos *eos, const double *
             if (!(p->flags[f] & FLUID_PARTICLE_FLUID))
                 continue;
             double xsf[FSI_DIM], w, unused;
-            wendland_c2_eval2(k, pair_vector(per, p->x, s, f, xsf), &w, &unused);
+            wendland_c2_eval2(k, wcsph_pair_vector(per, p->x, s, f, xsf), &w, &unused);
             if (w > 0.0)
                 ghost_wall_sums_add(&g, p, f, w, xsf);
         }
@@ -123,79 +101,100 @@ static ALWAYS_INLINE void gradient_share(double *grad_u, double *bsum, double *g
     }
 }
 
-/* I's side of the gradient sums over the candidates row[lo .. hi-1] in the sums
- * (a fluid particle's boundary segment, or a wall's or solid particle's full row). */
-static ALWAYS_INLINE void gradient_one_sided(const wcsph_neighbours *nb,
-                                             const wcsph_params *prm,
-                                             const fluid_particles *p, const double *u,
-                                             int i, const int32_t *row, int64_t lo,
-                                             int64_t hi, double *gu, double *bs, double *gr,
-                                             const int stress, const int antuono)
+/* I's side of the gradient sums of the pair with boundary particle j (in the sums) at
+ * rel, F = f (a fluid particle's boundary pair, or any pair of a wall's or solid
+ * particle's row). */
+static ALWAYS_INLINE void gradient_one_sided(const fluid_particles *p, const double *u, int i,
+                                             int j, const double *rel, double f, double *gu,
+                                             double *bs, double *gr, const int stress,
+                                             const int antuono)
 {
-    const wendland_c2_kernel *k = nb->kernel;
-    const fsi_periodic *per = periodic_of(nb);
-    for (int64_t e = lo; e < hi; e++) {
-        const int j = row[e];
-        if (!wcsph_in_sums(prm, p, j))
-            continue;
-        double rel[FSI_DIM], t[FSI_DIM], du[FSI_DIM];
-        const double r2 = pair_vector(per, p->x, i, j, rel);
-        if (!(r2 < k->support2))
-            continue;
-        const double f = kernel_f(k, r2);
-        for (int d = 0; d < FSI_DIM; d++) {
-            t[d] = -f * rel[d];
-            du[d] = u[j * FSI_DIM + d] - u[i * FSI_DIM + d];
-        }
-        gradient_share(gu, bs, gr, p->volume[j], t, du, rel, p->density[j] - p->density[i],
-                       stress, antuono);
+    double t[FSI_DIM], du[FSI_DIM];
+    for (int d = 0; d < FSI_DIM; d++) {
+        t[d] = -f * rel[d];
+        du[d] = u[j * FSI_DIM + d] - u[i * FSI_DIM + d];
     }
+    gradient_share(gu, bs, gr, p->volume[j], t, du, rel, p->density[j] - p->density[i],
+                   stress, antuono);
 }
 
-/* The gradient sums of every pair of the fluid particles of [lo, hi) (their rows:
- * fluid pairs both ways, boundary pairs on I's side), then of nothing else. */
+/* The gradient sums of the pairs of the fluid particles of [lo, hi) (their filtered
+ * rows: fluid pairs both ways, boundary pairs on I's side). */
 static ALWAYS_INLINE void gradient_block(const wcsph_neighbours *nb, const wcsph_params *prm,
                                          const fluid_particles *p, const double *u,
                                          wcsph_scratch *s, int lo, int hi, const int stress,
                                          const int antuono)
 {
     const wcsph_rows *rows = nb->rows;
-    const wendland_c2_kernel *k = nb->kernel;
     const fsi_periodic *per = periodic_of(nb);
+    /* Local restrict pointers: the stores into J's sums cannot alias the particles'
+     * fields, so the loop keeps them in registers. */
+    const double *restrict x = p->x, *restrict v = p->v, *restrict vol = p->volume;
+    const double *restrict rho = p->density, *restrict pair_f = rows->f;
+    const int32_t *restrict pair = rows->pair;
+    double *restrict gu_all = s->tau_rho2, *restrict bs_all = s->renorm_sum;
+    double *restrict gr_all = s->density_gradient;
     for (int i = lo; i < hi; i++) {
         if (!(p->flags[i] & FLUID_PARTICLE_FLUID))
             continue;
         double gu[FSI_MAT_SIZE] = {0}, bs[FSI_MAT_SIZE] = {0}, gr[FSI_DIM] = {0};
-        const double v_i = p->volume[i], rho_i = p->density[i];
-        for (int64_t e = rows->offset[i]; e < rows->split[i]; e++) {
-            const int j = rows->neighbour[e];
+        const double v_i = vol[i], rho_i = rho[i];
+        double x_i[FSI_DIM], u_i[FSI_DIM];
+        for (int d = 0; d < FSI_DIM; d++)
+            x_i[d] = x[i * FSI_DIM + d], u_i[d] = v[i * FSI_DIM + d];
+        const int64_t end = rows->fluid_end[i];
+        for (int64_t e = rows->offset[i]; e < end; e++) {
+            const int j = pair[e];
+            const double f = pair_f[e];
             double rel[FSI_DIM], t[FSI_DIM], du[FSI_DIM];
-            const double r2 = pair_vector(per, p->x, i, j, rel);
-            if (!(r2 < k->support2))
-                continue;
-            const double f = kernel_f(k, r2);
+            for (int d = 0; d < FSI_DIM; d++)
+                rel[d] = x[j * FSI_DIM + d] - x_i[d];
+            if (per)
+                fsi_periodic_min_image(per, rel);
             for (int d = 0; d < FSI_DIM; d++) {
                 t[d] = -f * rel[d];
-                du[d] = p->v[j * FSI_DIM + d] - p->v[i * FSI_DIM + d];
+                du[d] = v[j * FSI_DIM + d] - u_i[d];
             }
-            const double drho = p->density[j] - rho_i;
-            gradient_share(gu, bs, gr, p->volume[j], t, du, rel, drho, stress, antuono);
+            const double drho = rho[j] - rho_i;
+            gradient_share(gu, bs, gr, vol[j], t, du, rel, drho, stress, antuono);
             /* J's side: grad_J W_JI = -t, x_JI = -rel, u_I - u_J = -du. */
-            gradient_share(&s->tau_rho2[(size_t)j * FSI_MAT_SIZE],
-                           &s->renorm_sum[(size_t)j * FSI_MAT_SIZE],
-                           &s->density_gradient[j * FSI_DIM], v_i, t, du, rel, drho, stress,
-                           antuono);
+            gradient_share(&gu_all[(size_t)j * FSI_MAT_SIZE], &bs_all[(size_t)j * FSI_MAT_SIZE],
+                           &gr_all[j * FSI_DIM], v_i, t, du, rel, drho, stress, antuono);
         }
-        gradient_one_sided(nb, prm, p, u, i, rows->neighbour, rows->split[i],
-                           rows->offset[i + 1], gu, bs, gr, stress, antuono);
-        double *gu_i = &s->tau_rho2[(size_t)i * FSI_MAT_SIZE];
-        double *bs_i = &s->renorm_sum[(size_t)i * FSI_MAT_SIZE];
+        for (int64_t e = rows->split[i]; e < rows->boundary_end[i]; e++) {
+            const int j = pair[e];
+            if (!wcsph_in_sums(prm, p, j))
+                continue;
+            double rel[FSI_DIM];
+            wcsph_pair_vector(per, x, i, j, rel);
+            gradient_one_sided(p, u, i, j, rel, pair_f[e], gu, bs, gr, stress, antuono);
+        }
         for (int a = 0; a < FSI_MAT_SIZE; a++) {
-            gu_i[a] += gu[a];
-            bs_i[a] += bs[a];
+            gu_all[(size_t)i * FSI_MAT_SIZE + a] += gu[a];
+            bs_all[(size_t)i * FSI_MAT_SIZE + a] += bs[a];
         }
         for (int d = 0; d < FSI_DIM; d++)
-            s->density_gradient[i * FSI_DIM + d] += gr[d];
+            gr_all[i * FSI_DIM + d] += gr[d];
+    }
+}
+
+/* The gradient sums of wall or solid particle i (in the sums), over its full row. */
+static void gradient_boundary_row(const wcsph_neighbours *nb, const wcsph_params *prm,
+                                  const fluid_particles *p, const double *u, wcsph_scratch *s,
+                                  int i, int stress, int antuono)
+{
+    const fluid_verlet *list = nb->list;
+    const fsi_periodic *per = periodic_of(nb);
+    for (int64_t c = list->offset[i]; c < list->offset[i + 1]; c++) {
+        const int j = list->candidate[c];
+        double rel[FSI_DIM];
+        const double r2 = wcsph_pair_vector(per, p->x, i, j, rel);
+        if (!(r2 < nb->kernel->support2) || !wcsph_in_sums(prm, p, j))
+            continue;
+        gradient_one_sided(p, u, i, j, rel, wcsph_kernel_f(nb->kernel, r2),
+                           &s->tau_rho2[(size_t)i * FSI_MAT_SIZE],
+                           &s->renorm_sum[(size_t)i * FSI_MAT_SIZE],
+                           &s->density_gradient[i * FSI_DIM], stress, antuono);
     }
 }
 
@@ -242,11 +241,7 @@ void wcsph_gradients(const wcsph_neighbours *nb, const wcsph_params *prm,
 #pragma omp for schedule(dynamic, FLUID_CHUNK)
             for (int i = 0; i < n; i++)
                 if (!(p->flags[i] & FLUID_PARTICLE_FLUID) && wcsph_in_sums(prm, p, i))
-                    gradient_one_sided(nb, prm, p, u, i, nb->list->candidate,
-                                       nb->list->offset[i], nb->list->offset[i + 1],
-                                       &s->tau_rho2[(size_t)i * FSI_MAT_SIZE],
-                                       &s->renorm_sum[(size_t)i * FSI_MAT_SIZE],
-                                       &s->density_gradient[i * FSI_DIM], stress, antuono);
+                    gradient_boundary_row(nb, prm, p, u, s, i, stress, antuono);
 #pragma omp for schedule(static)
             for (int i = 0; i < n; i++) {
                 double *t = &s->tau_rho2[(size_t)i * FSI_MAT_SIZE];
@@ -295,10 +290,10 @@ static pair_context make_context(const wcsph_neighbours *nb, const wcsph_params 
 }
 
 /* The acceleration of fluid particle I from boundary (wall or solid) particle J at
- * x_IJ = rel within the support, gravity excluded (the force on I is m_I times it),
- * and with J in the sums its continuity and diffusion terms (without delta h c0). */
+ * x_IJ = rel within the support (F = f), gravity excluded (the force on I is m_I times
+ * it), and with J in the sums its continuity and diffusion terms (without delta h c0). */
 static inline void boundary_pair(const pair_context *c, int i, int j, const double *rel,
-                                 double r2, double *out, double *div, double *diff)
+                                 double r2, double f, double *out, double *div, double *diff)
 {
     const fluid_particles *p = c->p;
     const wcsph_params *prm = c->prm;
@@ -306,7 +301,7 @@ static inline void boundary_pair(const pair_context *c, int i, int j, const doub
         out[d] = 0.0;
     *div = *diff = 0.0;
     if (wcsph_in_sums(prm, p, j)) {
-        const double f = kernel_f(c->k, r2), m_j = p->mass[j];
+        const double m_j = p->mass[j];
         const double rho_i = p->density[i], rho_j = p->density[j];
         /* a wall pushes, never pulls: max(p_I, 0) / rho_I^2 */
         const double p_i = fmax(c->s->pressure_rho2[i], 0.0);
@@ -382,45 +377,61 @@ static ALWAYS_INLINE long long rates_block(const wcsph_neighbours *nb, const pai
                                            const int antuono)
 {
     const wcsph_rows *rows = nb->rows;
-    const wendland_c2_kernel *k = nb->kernel;
     const fsi_periodic *per = periodic_of(nb);
     const fluid_particles *p = c->p;
     const wcsph_params *prm = c->prm;
     const wcsph_scratch *s = c->s;
     const double h = prm->h, beta1 = 0.5 * prm->beta1, beta2 = prm->beta2, eps2 = c->eps2;
     const double lap_scale = 2.0 * prm->viscosity;
+    /* Local restrict pointers: the stores into J's rates cannot alias the particles'
+     * fields, so the loop keeps them in registers. */
+    const double *restrict xs = p->x, *restrict vs = p->v, *restrict vol = p->volume;
+    const double *restrict rho = p->density, *restrict mass = p->mass;
+    const double *restrict pr = s->pressure_rho2, *restrict snd = s->sound;
+    const double *restrict tau = s->tau_rho2, *restrict grad = s->density_gradient;
+    const double *restrict pair_f = rows->f;
+    const int32_t *restrict pair = rows->pair;
+    double *restrict out_v = dv_dt, *restrict out_rho = drho_dt, *restrict out_d = diffusion;
     long long pairs = 0;
     for (int i = lo; i < hi; i++) {
         if (!(p->flags[i] & FLUID_PARTICLE_FLUID))
             continue;
-        const double rho_i = p->density[i], m_i = p->mass[i], vol_i = p->volume[i];
-        const double pr_i = s->pressure_rho2[i], c_i = s->sound[i];
-        const double *v_i = &p->v[i * FSI_DIM];
-        const double *t_i = &s->tau_rho2[(size_t)i * FSI_MAT_SIZE];
-        const double *g_i = &s->density_gradient[i * FSI_DIM];
+        const double rho_i = rho[i], m_i = mass[i], vol_i = vol[i];
+        const double pr_i = pr[i], c_i = snd[i];
+        double x_i[FSI_DIM], v_i[FSI_DIM], t_i[FSI_MAT_SIZE], g_i[FSI_DIM];
+        for (int d = 0; d < FSI_DIM; d++) {
+            x_i[d] = xs[i * FSI_DIM + d];
+            v_i[d] = vs[i * FSI_DIM + d];
+            g_i[d] = antuono ? grad[i * FSI_DIM + d] : 0.0;
+        }
+        for (int a = 0; a < FSI_MAT_SIZE; a++)
+            t_i[a] = stress ? tau[(size_t)i * FSI_MAT_SIZE + a] : 0.0;
         double acc[FSI_DIM] = {0}, div = 0.0, diff = 0.0;
-        for (int64_t e = rows->offset[i]; e < rows->split[i]; e++) {
-            const int j = rows->neighbour[e];
-            double rel[FSI_DIM], dv[FSI_DIM], x[FSI_DIM];
-            const double r2 = pair_vector(per, p->x, i, j, rel);
-            if (!(r2 < k->support2))
-                continue;
-            pairs++;
-            const double f = kernel_f(k, r2), rho_j = p->density[j];
-            double vx = 0.0;
+        const int64_t end = rows->fluid_end[i];
+        pairs += end - rows->offset[i];
+        for (int64_t e = rows->offset[i]; e < end; e++) {
+            const int j = pair[e];
+            const double f = pair_f[e], rho_j = rho[j];
+            double rel[FSI_DIM], dv[FSI_DIM], x[FSI_DIM], r2 = 0.0, vx = 0.0;
+            for (int d = 0; d < FSI_DIM; d++)
+                rel[d] = xs[j * FSI_DIM + d] - x_i[d];
+            if (per)
+                fsi_periodic_min_image(per, rel);
             for (int d = 0; d < FSI_DIM; d++) {
-                dv[d] = p->v[j * FSI_DIM + d] - v_i[d];
+                r2 += rel[d] * rel[d];
+                dv[d] = vs[j * FSI_DIM + d] - v_i[d];
                 vx += dv[d] * rel[d];
             }
             /* 004 Eqs. 8-9: only approaching pairs (mu = 0 otherwise) */
-            const double mu = h * fmin(vx, 0.0) / (r2 + eps2);
-            const double pi_ij = (-beta1 * (c_i + s->sound[j]) * mu + beta2 * mu * mu) /
+            const double inv_r2 = 1.0 / (r2 + eps2);
+            const double mu = h * (vx < 0.0 ? vx : 0.0) * inv_r2;
+            const double pi_ij = (-beta1 * (c_i + snd[j]) * mu + beta2 * mu * mu) /
                                  (0.5 * (rho_i + rho_j));
-            const double radial = f * (pr_i + s->pressure_rho2[j] + pi_ij);
+            const double radial = f * (pr_i + pr[j] + pi_ij);
             for (int d = 0; d < FSI_DIM; d++)
                 x[d] = radial * rel[d];
             if (stress) {
-                const double *t_j = &s->tau_rho2[(size_t)j * FSI_MAT_SIZE];
+                const double *t_j = &tau[(size_t)j * FSI_MAT_SIZE];
                 for (int a = 0; a < FSI_DIM; a++) {
                     double sum = 0.0;
                     for (int b = 0; b < FSI_DIM; b++)
@@ -428,49 +439,46 @@ static ALWAYS_INLINE long long rates_block(const wcsph_neighbours *nb, const pai
                     x[a] -= f * sum;
                 }
             } else {
-                const double lap = lap_scale * f * r2 / (rho_i * rho_j * (r2 + eps2));
+                const double lap = lap_scale * f * r2 * inv_r2 / (rho_i * rho_j);
                 for (int d = 0; d < FSI_DIM; d++)
                     x[d] -= lap * dv[d];
             }
-            const double m_j = p->mass[j];
+            const double m_j = mass[j];
             for (int d = 0; d < FSI_DIM; d++) {
                 acc[d] += m_j * x[d];
-                dv_dt[j * FSI_DIM + d] -= m_i * x[d];
+                out_v[j * FSI_DIM + d] -= m_i * x[d];
             }
             const double cont = f * vx;
             div += m_j * cont;
-            drho_dt[j] += m_i * cont;
+            out_rho[j] += m_i * cont;
             const double drho = rho_j - rho_i;
             double t;
             if (antuono) {
-                const double *g_j = &s->density_gradient[j * FSI_DIM];
                 double proj = 0.0;
                 for (int d = 0; d < FSI_DIM; d++)
-                    proj += (g_i[d] + g_j[d]) * rel[d];
+                    proj += (g_i[d] + grad[j * FSI_DIM + d]) * rel[d];
                 t = r2 > 0.0 ? -f * (2.0 * drho - proj) : 0.0;
             } else {
-                t = -2.0 * f * drho * r2 / (r2 + eps2);
+                t = -2.0 * f * drho * r2 * inv_r2;
             }
-            diff += p->volume[j] * t;
-            diffusion[j] -= vol_i * t;
+            diff += vol[j] * t;
+            out_d[j] -= vol_i * t;
         }
-        for (int64_t e = rows->split[i]; e < rows->offset[i + 1]; e++) {
-            const int j = rows->neighbour[e];
+        pairs += rows->boundary_end[i] - rows->split[i];
+        for (int64_t e = rows->split[i]; e < rows->boundary_end[i]; e++) {
+            const int j = pair[e];
             double rel[FSI_DIM], a[FSI_DIM], d_div, d_diff;
-            const double r2 = pair_vector(per, p->x, i, j, rel);
-            if (!(r2 < k->support2))
-                continue;
-            pairs++;
-            boundary_pair(c, i, j, rel, r2, a, &d_div, &d_diff);
+            const double r2 = wcsph_pair_vector(per, xs, i, j, rel);
+            boundary_pair(c, i, j, rel, r2, pair_f[e], a, &d_div, &d_diff);
             for (int d = 0; d < FSI_DIM; d++)
                 acc[d] += a[d];
             div += d_div;
             diff += d_diff;
         }
         for (int d = 0; d < FSI_DIM; d++)
-            dv_dt[i * FSI_DIM + d] += acc[d];
-        drho_dt[i] += div;
-        diffusion[i] += diff;
+            out_v[i * FSI_DIM + d] += acc[d];
+        out_rho[i] += div;
+        out_d[i] += diff;
     }
     return pairs;
 }
@@ -542,10 +550,10 @@ void wcsph_density_diffusion(const wcsph_neighbours *nb, const wcsph_params *prm
              (p->flags[i] & FLUID_PARTICLE_FLUID) && e < list->offset[i + 1]; e++) {
             const int j = list->candidate[e];
             double rel[FSI_DIM];
-            const double r2 = pair_vector(per, p->x, i, j, rel);
+            const double r2 = wcsph_pair_vector(per, p->x, i, j, rel);
             if (!(r2 < nb->kernel->support2) || !wcsph_in_sums(prm, p, j))
                 continue;
-            const double f = kernel_f(nb->kernel, r2), drho = p->density[j] - p->density[i];
+            const double f = wcsph_kernel_f(nb->kernel, r2), drho = p->density[j] - p->density[i];
             const double *gi = &s->density_gradient[i * FSI_DIM];
             const double *gj = (p->flags[j] & FLUID_PARTICLE_FLUID)
                                    ? &s->density_gradient[j * FSI_DIM] : gi;
@@ -581,10 +589,10 @@ void wcsph_boundary_loads(const wcsph_neighbours *nb, const wcsph_params *prm,
                 continue;
             /* the pair as I's row sees it */
             double rel[FSI_DIM], a[FSI_DIM], d_div, d_diff;
-            const double r2 = pair_vector(per, p->x, i, b, rel);
+            const double r2 = wcsph_pair_vector(per, p->x, i, b, rel);
             if (!(r2 < nb->kernel->support2))
                 continue;
-            boundary_pair(&c, i, b, rel, r2, a, &d_div, &d_diff);
+            boundary_pair(&c, i, b, rel, r2, wcsph_kernel_f(nb->kernel, r2), a, &d_div, &d_diff);
             for (int d = 0; d < FSI_DIM; d++)
                 f_b[d] -= p->mass[i] * a[d];
         }
@@ -604,11 +612,11 @@ void wcsph_gradient(const wcsph_neighbours *nb, const wcsph_params *prm,
         for (int64_t e = list->offset[i]; e < list->offset[i + 1]; e++) {
             const int j = list->candidate[e];
             double rel[FSI_DIM];
-            const double r2 = pair_vector(per, p->x, i, j, rel);
+            const double r2 = wcsph_pair_vector(per, p->x, i, j, rel);
             if (!(r2 < nb->kernel->support2) || !wcsph_in_sums(prm, p, j))
                 continue;
             /* V_J grad_I W_IJ = -V_J F x_IJ */
-            const double vf = -p->volume[j] * kernel_f(nb->kernel, r2);
+            const double vf = -p->volume[j] * wcsph_kernel_f(nb->kernel, r2);
             double gw[FSI_DIM];
             for (int d = 0; d < FSI_DIM; d++) {
                 gw[d] = vf * rel[d];

@@ -21,6 +21,10 @@ void wcsph_rows_free(wcsph_rows *r)
     free(r->split);
     free(r->neighbour);
     free(r->block_start);
+    free(r->fluid_end);
+    free(r->boundary_end);
+    free(r->pair);
+    free(r->f);
     wcsph_rows_init(r);
 }
 
@@ -32,11 +36,16 @@ static int reserve(wcsph_rows *r, int n, int64_t n_pairs)
         r->offset = fsi_grow(r->offset, (cap + 1) * sizeof *r->offset, &failed);
         r->split = fsi_grow(r->split, (cap + 1) * sizeof *r->split, &failed);
         r->block_start = fsi_grow(r->block_start, (cap + 2) * sizeof *r->block_start, &failed);
+        r->fluid_end = fsi_grow(r->fluid_end, (cap + 1) * sizeof *r->fluid_end, &failed);
+        r->boundary_end = fsi_grow(r->boundary_end, (cap + 1) * sizeof *r->boundary_end,
+                                   &failed);
         r->point_capacity = failed ? 0 : (int)cap;
     }
     if (!failed && (!r->neighbour || n_pairs > r->pair_capacity)) {
         const size_t cap = fsi_grown_capacity((size_t)n_pairs);
         r->neighbour = fsi_grow(r->neighbour, cap * sizeof *r->neighbour, &failed);
+        r->pair = fsi_grow(r->pair, cap * sizeof *r->pair, &failed);
+        r->f = fsi_grow(r->f, cap * sizeof *r->f, &failed);
         r->pair_capacity = failed ? 0 : (int64_t)cap;
     }
     return failed ? -1 : 0;
@@ -106,4 +115,34 @@ int wcsph_rows_build(wcsph_rows *r, const fluid_verlet *list, const fluid_partic
     r->n_blocks = nb - 1;
     r->n = n;
     return 0;
+}
+
+/* The candidates of neighbour[lo .. hi-1] within the support into pair and f from lo
+ * on; returns the end. */
+static inline int64_t filter_segment(wcsph_rows *r, const wendland_c2_kernel *k,
+                                     const fsi_periodic *per, const double *x, int i,
+                                     int64_t lo, int64_t hi)
+{
+    int64_t m = lo;
+    for (int64_t e = lo; e < hi; e++) {
+        const int j = r->neighbour[e];
+        double rel[FSI_DIM];
+        const double r2 = wcsph_pair_vector(per, x, i, j, rel);
+        const int inside = r2 < k->support2;
+        r->pair[m] = j;
+        r->f[m] = wcsph_kernel_f(k, inside ? r2 : 0.0);
+        m += inside;
+    }
+    return m;
+}
+
+void wcsph_rows_filter(wcsph_rows *r, const wendland_c2_kernel *k, const fsi_periodic *per,
+                       const fluid_particles *p)
+{
+    const int n = r->n;
+#pragma omp parallel for schedule(dynamic, FLUID_CHUNK) if (n >= FLUID_PARALLEL_MIN_PARTICLES)
+    for (int i = 0; i < n; i++) {
+        r->fluid_end[i] = filter_segment(r, k, per, p->x, i, r->offset[i], r->split[i]);
+        r->boundary_end[i] = filter_segment(r, k, per, p->x, i, r->split[i], r->offset[i + 1]);
+    }
 }

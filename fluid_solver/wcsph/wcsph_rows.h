@@ -8,8 +8,13 @@
  *   - its boundary segment: every wall and solid candidate (those pairs change only
  *     I's rates: a boundary particle has none).
  * A wall or solid particle's own sums (its pressure, 000 Eq. 52; its velocity gradient)
- * walk its full Verlet row. Candidates are filtered against the support in the passes:
- * no per-pair data is stored, so a pass streams 4 bytes per candidate.
+ * walk its full Verlet row.
+ *
+ * At every evaluation wcsph_rows_filter keeps, in place of each segment, the candidates
+ * now within the support with the kernel's F = (dW/dr) / r: the passes then walk only
+ * pairs, with neither a square root nor a branch on the distance (about a quarter of
+ * the candidates are outside; mispredicting them stalled the passes). The filter is
+ * itself branch-free: it writes every candidate and advances over those inside.
  *
  * Writing J's share of a fluid pair makes the order of additions matter. To stay the
  * same on any number of threads, the fluid rows are cut into blocks such that every
@@ -24,6 +29,7 @@
 
 #include "fluid_particles.h"
 #include "verlet_list.h"
+#include "wendland_c2.h"
 
 typedef struct {
     int n;                  /* particles of the last build */
@@ -31,6 +37,11 @@ typedef struct {
     int64_t *split;         /* n: fluid segment offset[I] .. split[I]-1, boundary
                              * segment split[I] .. offset[I+1]-1 */
     int32_t *neighbour;
+    /* of the last filter: I's pairs are pair[offset[I] .. fluid_end[I]-1] and
+     * pair[split[I] .. boundary_end[I]-1], with f their F */
+    int64_t *fluid_end, *boundary_end;
+    int32_t *pair;
+    double *f;
     int n_blocks;
     int *block_start;       /* n_blocks + 1 */
     int point_capacity, block_capacity;
@@ -43,5 +54,32 @@ void wcsph_rows_free(wcsph_rows *r);
 /* The rows of p from its Verlet candidates (rebuilt by the caller whenever the list
  * is). 0, or -1 when memory runs out or the list is not for p->n particles. */
 int wcsph_rows_build(wcsph_rows *r, const fluid_verlet *list, const fluid_particles *p);
+
+/* The pairs of the rows now within k's support, and their F (above). */
+void wcsph_rows_filter(wcsph_rows *r, const wendland_c2_kernel *k, const fsi_periodic *per,
+                       const fluid_particles *p);
+
+/* x_IJ = x_J - x_I (nearest image when per is not NULL) and |x_IJ|^2: every WCSPH pass
+ * takes a pair's vector from here, so a pair seen from either row gives the same
+ * numbers. */
+static inline double wcsph_pair_vector(const fsi_periodic *per, const double *x, int i, int j,
+                                       double *rel)
+{
+    double r2 = 0.0;
+    for (int d = 0; d < FSI_DIM; d++)
+        rel[d] = x[(int64_t)j * FSI_DIM + d] - x[(int64_t)i * FSI_DIM + d];
+    if (per)
+        fsi_periodic_min_image(per, rel);
+    for (int d = 0; d < FSI_DIM; d++)
+        r2 += rel[d] * rel[d];
+    return r2;
+}
+
+/* F = (dW/dr) / r of the Wendland C2 kernel (wendland_c2.h) at r^2 inside the support. */
+static inline double wcsph_kernel_f(const wendland_c2_kernel *k, double r2)
+{
+    const double s = 2.0 - sqrt(r2) * k->inv_h;
+    return k->grad_scale * s * s * s;
+}
 
 #endif

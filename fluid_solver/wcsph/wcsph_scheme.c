@@ -2,12 +2,13 @@
  * rates is
  *   1. pressure and volume of every fluid particle from its density (Tait, 004 Eq. 4);
  *   2. the Verlet candidates (neighbours/verlet_list.h) and, at each of their builds,
- *      the scheme's rows (wcsph_rows.h: each fluid pair once);
+ *      the scheme's rows (wcsph_rows.h: each fluid pair once); the pairs of the rows
+ *      now within the support and their kernel gradients;
  *   3. the dummy wall particles, and the solid's particles when they are dummies, from
  *      the fluid around them (004 Eqs. 10-11, walls/ghost_walls.h);
  *   4. sound speed, viscous stress and renormalised density gradient (wcsph_gradients);
  *   5. continuity with density diffusion and momentum (004 Eqs. 6-9, wcsph_rates).
- * The Wendland C2 kernel (004 Eq. 5) is evaluated in the passes, pair by pair.
+ * with the Wendland C2 kernel (004 Eq. 5).
  * Steps with the shared predictor-corrector (004 §4) or the Verlet scheme. */
 #include <math.h>
 #include <stdio.h>
@@ -29,7 +30,7 @@
 enum { PHASE_SEARCH, PHASE_ROWS, PHASE_STATE, PHASE_WALLS, PHASE_GRADIENTS, PHASE_MOMENTUM,
        N_PHASES };
 static const char *const phase_name[N_PHASES] = {
-    "rates: neighbour search", "rates: rows", "rates: equation of state", "rates: walls",
+    "rates: neighbour search", "rates: pairs", "rates: equation of state", "rates: walls",
     "rates: gradients", "rates: momentum"};
 
 struct fluid_scheme {
@@ -201,12 +202,15 @@ int fluid_scheme_rates(fluid_scheme *s, fluid_particles *p, double *drho_dt, dou
     phase(s, PHASE_SEARCH, 0);
     phase(s, PHASE_ROWS, 1);
     const int rc = built < 0 ? -1 : built > 0 ? wcsph_rows_build(&s->rows, &s->list, p) : 0;
-    phase(s, PHASE_ROWS, 0);
     if (rc != 0) {
+        phase(s, PHASE_ROWS, 0);
         snprintf(msg, msg_size, "cannot build the neighbour lists of %d particles (a "
                  "position is not finite, or memory ran out)", p->n);
         return -1;
     }
+    wcsph_rows_filter(&s->rows, &s->kernel,
+                      fsi_periodic_any(&s->list.periodic) ? &s->list.periodic : NULL, p);
+    phase(s, PHASE_ROWS, 0);
     const wcsph_neighbours nb = neighbours(s);
     phase(s, PHASE_WALLS, 1);
     wcsph_walls(&nb, &s->eos, s->prm.gravity, s->free_slip, p, s->velocity_for_viscosity);

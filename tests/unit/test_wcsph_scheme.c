@@ -90,6 +90,7 @@ static void scene_rates(scene *s)
     fluid_verlet_invalidate(&s->list);
     CHECK(fluid_verlet_update(&s->list, p, s->k.support, 0.0) >= 0, "verlet list");
     CHECK(wcsph_rows_build(&s->rows, &s->list, p) == 0, "rows");
+    wcsph_rows_filter(&s->rows, &s->k, NULL, p);
     s->nb = (wcsph_neighbours){&s->list, &s->rows, &s->k};
     const wcsph_neighbours nb = s->nb;
     wcsph_walls(&nb, &s->eos, s->prm.gravity, NULL, p, s->u);
