@@ -123,7 +123,7 @@ static ALWAYS_INLINE void gradient_one_sided(const fluid_particles *p, const dou
 static ALWAYS_INLINE void gradient_block(const wcsph_neighbours *nb, const wcsph_params *prm,
                                          const fluid_particles *p, const double *u,
                                          wcsph_scratch *s, int lo, int hi, const int stress,
-                                         const int antuono)
+                                         const int antuono, const int periodic)
 {
     const wcsph_rows *rows = nb->rows;
     const fsi_periodic *per = periodic_of(nb);
@@ -143,13 +143,16 @@ static ALWAYS_INLINE void gradient_block(const wcsph_neighbours *nb, const wcsph
         for (int d = 0; d < FSI_DIM; d++)
             x_i[d] = x[i * FSI_DIM + d], u_i[d] = v[i * FSI_DIM + d];
         const int64_t end = rows->fluid_end[i];
+        /* The J of a row are distinct: its pairs are independent (omp simd lets the
+         * compiler overlap them; it pairs two of them per instruction). */
+#pragma omp simd reduction(+ : gu[:FSI_MAT_SIZE], bs[:FSI_MAT_SIZE], gr[:FSI_DIM])
         for (int64_t e = rows->offset[i]; e < end; e++) {
             const int j = pair[e];
             const double f = pair_f[e];
             double rel[FSI_DIM], t[FSI_DIM], du[FSI_DIM];
             for (int d = 0; d < FSI_DIM; d++)
                 rel[d] = x[j * FSI_DIM + d] - x_i[d];
-            if (per)
+            if (periodic)
                 fsi_periodic_min_image(per, rel);
             for (int d = 0; d < FSI_DIM; d++) {
                 t[d] = -f * rel[d];
@@ -202,12 +205,14 @@ static void gradient_block_any(const wcsph_neighbours *nb, const wcsph_params *p
                                const fluid_particles *p, const double *u, wcsph_scratch *s,
                                int lo, int hi, int stress, int antuono)
 {
-    if (stress && antuono)
-        gradient_block(nb, prm, p, u, s, lo, hi, 1, 1);
+    if (periodic_of(nb)) /* the same code with each choice a constant */
+        gradient_block(nb, prm, p, u, s, lo, hi, stress, antuono, 1);
+    else if (stress && antuono)
+        gradient_block(nb, prm, p, u, s, lo, hi, 1, 1, 0);
     else if (stress)
-        gradient_block(nb, prm, p, u, s, lo, hi, 1, 0);
+        gradient_block(nb, prm, p, u, s, lo, hi, 1, 0, 0);
     else
-        gradient_block(nb, prm, p, u, s, lo, hi, 0, 1);
+        gradient_block(nb, prm, p, u, s, lo, hi, 0, 1, 0);
 }
 
 void wcsph_gradients(const wcsph_neighbours *nb, const wcsph_params *prm,
@@ -374,7 +379,7 @@ static inline void boundary_pair(const pair_context *c, int i, int j, const doub
 static ALWAYS_INLINE long long rates_block(const wcsph_neighbours *nb, const pair_context *c,
                                            double *drho_dt, double *dv_dt, double *diffusion,
                                            int lo, int hi, const int stress,
-                                           const int antuono)
+                                           const int antuono, const int periodic)
 {
     const wcsph_rows *rows = nb->rows;
     const fsi_periodic *per = periodic_of(nb);
@@ -409,13 +414,15 @@ static ALWAYS_INLINE long long rates_block(const wcsph_neighbours *nb, const pai
         double acc[FSI_DIM] = {0}, div = 0.0, diff = 0.0;
         const int64_t end = rows->fluid_end[i];
         pairs += end - rows->offset[i];
+        /* The J of a row are distinct: its pairs are independent (as above). */
+#pragma omp simd reduction(+ : acc[:FSI_DIM], div, diff)
         for (int64_t e = rows->offset[i]; e < end; e++) {
             const int j = pair[e];
             const double f = pair_f[e], rho_j = rho[j];
             double rel[FSI_DIM], dv[FSI_DIM], x[FSI_DIM], r2 = 0.0, vx = 0.0;
             for (int d = 0; d < FSI_DIM; d++)
                 rel[d] = xs[j * FSI_DIM + d] - x_i[d];
-            if (per)
+            if (periodic)
                 fsi_periodic_min_image(per, rel);
             for (int d = 0; d < FSI_DIM; d++) {
                 r2 += rel[d] * rel[d];
@@ -488,13 +495,15 @@ static long long rates_block_any(const wcsph_neighbours *nb, const pair_context 
                                  int hi)
 {
     const int stress = !c->prm->laplacian, antuono = c->prm->antuono;
+    if (periodic_of(nb)) /* the same code with each choice a constant */
+        return rates_block(nb, c, drho_dt, dv_dt, diffusion, lo, hi, stress, antuono, 1);
     if (stress && antuono)
-        return rates_block(nb, c, drho_dt, dv_dt, diffusion, lo, hi, 1, 1);
+        return rates_block(nb, c, drho_dt, dv_dt, diffusion, lo, hi, 1, 1, 0);
     if (stress)
-        return rates_block(nb, c, drho_dt, dv_dt, diffusion, lo, hi, 1, 0);
+        return rates_block(nb, c, drho_dt, dv_dt, diffusion, lo, hi, 1, 0, 0);
     if (antuono)
-        return rates_block(nb, c, drho_dt, dv_dt, diffusion, lo, hi, 0, 1);
-    return rates_block(nb, c, drho_dt, dv_dt, diffusion, lo, hi, 0, 0);
+        return rates_block(nb, c, drho_dt, dv_dt, diffusion, lo, hi, 0, 1, 0);
+    return rates_block(nb, c, drho_dt, dv_dt, diffusion, lo, hi, 0, 0, 0);
 }
 
 void wcsph_rates(const wcsph_neighbours *nb, const wcsph_params *prm, const fluid_particles *p,

@@ -130,7 +130,7 @@ static inline int64_t filter_segment(wcsph_rows *r, const wendland_c2_kernel *k,
         const double r2 = wcsph_pair_vector(per, x, i, j, rel);
         const int inside = r2 < k->support2;
         r->pair[m] = j;
-        r->f[m] = wcsph_kernel_f(k, inside ? r2 : 0.0);
+        r->f[m] = wcsph_kernel_f(k, r2) * (double)inside; /* no branch */
         m += inside;
     }
     return m;
