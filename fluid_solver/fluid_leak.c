@@ -4,6 +4,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "fluid_parallel.h"
+
 enum { SIDE_UNKNOWN = 0, SIDE_BELOW = 1, SIDE_ABOVE = 2 };
 
 /* The wall box b at time t: where it is drawn, moved by its motion. */
@@ -82,18 +84,32 @@ int fluid_leak_check(fluid_leak *l, const fluid_particles *p, double t,
                      fluid_leak_crossing *found)
 {
     found->particle = -1;
+    const int n = l->n;
     for (int w = 0; w < l->n_walls; w++) {
         const fluid_box *b = &l->geometry->boxes[l->wall[w]];
         double lo[FSI_DIM], hi[FSI_DIM];
         wall_at(b, t, lo, hi);
-        for (int i = 0; i < l->n; i++) {
+        /* Each particle's sides are its own; the first crossing (by wall, then index)
+         * is the one reported, on any number of threads: the smallest key
+         * 8 i + 2 axis + upward. */
+        const long long none = 8LL * n;
+        long long first = none;
+#pragma omp parallel for schedule(static) reduction(min : first) \
+    if (n >= FLUID_PARALLEL_MIN_PARTICLES)
+        for (int i = 0; i < n; i++) {
             if (!(p->flags[i] & FLUID_PARTICLE_FLUID))
                 continue;
             unsigned char *side = &l->side[((size_t)i * l->n_walls + w) * FSI_DIM];
             int upward = 0;
             const int d = update_sides(l, lo, hi, &p->x[i * FSI_DIM], side, &upward);
-            if (d >= 0 && found->particle < 0)
-                *found = (fluid_leak_crossing){i, l->wall[w], d, upward, upward ? hi[d] : lo[d]};
+            const long long key = 8LL * i + 2 * d + upward;
+            if (d >= 0 && key < first)
+                first = key;
+        }
+        if (first < none && found->particle < 0) {
+            const int d = (int)(first % 8) / 2, upward = (int)(first % 2);
+            *found = (fluid_leak_crossing){(int)(first / 8), l->wall[w], d, upward,
+                                           upward ? hi[d] : lo[d]};
         }
     }
     return found->particle >= 0;

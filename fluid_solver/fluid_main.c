@@ -26,6 +26,7 @@
 #include "fluid_coupling.h"
 #include "fluid_geometry.h"
 #include "fluid_leak.h"
+#include "fluid_parallel.h"
 #include "fluid_periodic.h"
 #include "fluid_probes.h"
 #include "fluid_scheme.h"
@@ -409,7 +410,10 @@ static int setup(fluid_run *s, fsi_participant *part)
 static double max_acceleration(const fluid_run *s)
 {
     double amax = 0.0;
-    for (int i = 0; i < s->p.n; i++)
+    const int n = s->p.n;
+#pragma omp parallel for schedule(static) reduction(max : amax) \
+    if (n >= FLUID_PARALLEL_MIN_PARTICLES)
+    for (int i = 0; i < n; i++)
         if (s->p.flags[i] & FLUID_PARTICLE_FLUID)
             amax = fmax(amax, fsi_vec_norm(&s->accel[i * FSI_DIM]));
     return amax;
@@ -419,20 +423,25 @@ static double max_acceleration(const fluid_run *s)
 static int check_finite(fluid_run *s, double t, int window)
 {
     const fluid_particles *p = &s->p;
-    for (int i = 0; i < p->n; i++) {
+    const int n = p->n;
+    int first = n; /* the first bad particle, the same on any number of threads */
+#pragma omp parallel for schedule(static) reduction(min : first) \
+    if (n >= FLUID_PARALLEL_MIN_PARTICLES)
+    for (int i = 0; i < n; i++) {
         if (!(p->flags[i] & FLUID_PARTICLE_FLUID))
             continue;
         int ok = isfinite(p->density[i]) && p->density[i] > 0.0;
         for (int d = 0; d < FSI_DIM; d++)
             ok = ok && isfinite(p->x[i * FSI_DIM + d]) && isfinite(p->v[i * FSI_DIM + d]);
-        if (!ok) {
-            snprintf(s->msg, sizeof s->msg, "particle %d has a non-finite position, velocity "
-                     "or density (density %g) at t = %.9g s (window %d, step %ld): the "
-                     "integration is unstable", p->id[i], p->density[i], t, window, s->steps);
-            return -1;
-        }
+        if (!ok && i < first)
+            first = i;
     }
-    return 0;
+    if (first == n)
+        return 0;
+    snprintf(s->msg, sizeof s->msg, "particle %d has a non-finite position, velocity or "
+             "density (density %g) at t = %.9g s (window %d, step %ld): the integration is "
+             "unstable", p->id[first], p->density[first], t, window, s->steps);
+    return -1;
 }
 
 static const char axis_name[3] = {'x', 'y', 'z'};

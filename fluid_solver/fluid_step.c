@@ -3,6 +3,7 @@
 
 #include <math.h>
 
+#include "fluid_parallel.h"
 #include "small_tensor.h"
 
 double fluid_sound_speed(const fsi_case *c, const char *role, double rho0)
@@ -49,7 +50,10 @@ double fluid_stable_step(const fluid_step_limits *l, double vmax, double amax)
 double fluid_largest_speed(const fluid_particles *p)
 {
     double vmax = 0.0;
-    for (int i = 0; i < p->n; i++)
+    const int n = p->n;
+#pragma omp parallel for schedule(static) reduction(max : vmax) \
+    if (n >= FLUID_PARALLEL_MIN_PARTICLES)
+    for (int i = 0; i < n; i++)
         if (p->flags[i] & FLUID_PARTICLE_FLUID)
             vmax = fmax(vmax, fsi_vec_norm(&p->v[i * FSI_DIM]));
     return vmax;

@@ -1,6 +1,8 @@
 /* The weakly compressible predictor-corrector (wc_predictor_corrector.h). */
 #include "wc_predictor_corrector.h"
 
+#include "fluid_parallel.h"
+
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -54,6 +56,7 @@ int fluid_wc_step(fluid_wc_integrator *in, fluid_particles *p, double t, double 
     memcpy(in->x0, p->x, (size_t)n * FSI_DIM * sizeof *p->x);
     memcpy(in->v0, p->v, (size_t)n * FSI_DIM * sizeof *p->v);
     memcpy(in->rho0, p->density, (size_t)n * sizeof *p->density);
+#pragma omp parallel for schedule(static) if (n >= FLUID_PARALLEL_MIN_PARTICLES)
     for (int i = 0; i < n; i++) {
         if (!(p->flags[i] & FLUID_PARTICLE_FLUID))
             continue;
@@ -68,6 +71,7 @@ int fluid_wc_step(fluid_wc_integrator *in, fluid_particles *p, double t, double 
         hooks->loads(hooks->owner, dt) != 0)
         return -1;
     timer(hooks, 1);
+#pragma omp parallel for schedule(static) if (n >= FLUID_PARALLEL_MIN_PARTICLES)
     for (int i = 0; i < n; i++) {
         if (!(p->flags[i] & FLUID_PARTICLE_FLUID))
             continue;

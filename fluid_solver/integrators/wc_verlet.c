@@ -5,6 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "fluid_parallel.h"
 #include "grow.h"
 
 void fluid_wc_verlet_init(fluid_wc_verlet *in, long euler_interval)
@@ -58,6 +59,7 @@ int fluid_wc_verlet_step(fluid_wc_verlet *in, fluid_particles *p, double t, doub
     const int euler = !in->have_prev || in->step % in->euler_interval == 0;
     const double span = euler ? dt : in->dt_prev + dt;
     const double *drho = hooks->drho, *accel = hooks->accel;
+#pragma omp parallel for schedule(static) if (n >= FLUID_PARALLEL_MIN_PARTICLES)
     for (int i = 0; i < n; i++) {
         if (!(p->flags[i] & FLUID_PARTICLE_FLUID))
             continue;
