@@ -23,7 +23,11 @@ void fluid_step_limits_read(fluid_step_limits *l, const fsi_case *c, const char 
     l->sound_speed = fluid_sound_speed(c, role, l->density);
     l->h = fsi_case_get_real(c, fsi_case_solver_section(c, role), "smoothing_factor", 1.2) *
            fsi_case_get_real(c, role, "spacing", 0.0);
-    l->cfl_acoustic = fsi_case_get_real(c, role, "cfl_acoustic", 0.25);
+    /* A scheme may set its own acoustic factor in its section (acoustic_step_factor:
+     * the schemes' stable steps differ and a case carries several); else [fluid]'s. */
+    l->cfl_acoustic = fsi_case_get_real(c, fsi_case_solver_section(c, role),
+                                        "acoustic_step_factor",
+                                        fsi_case_get_real(c, role, "cfl_acoustic", 0.25));
     l->cfl_viscous = fsi_case_get_real(c, role, "cfl_viscous", 0.125);
     l->cfl_force = fsi_case_get_real(c, role, "cfl_force", 0.25);
 }

@@ -44,6 +44,10 @@ static const fsi_key_spec keys[] = {
      "predictor_corrector: the predictor-corrector of 004 §4 (two evaluations a step); "
      "verlet: Monaghan's Verlet scheme as DualSPHysics uses it (one evaluation a step, an "
      "Euler step every 40)."},
+    {"acoustic_step_factor", FSI_KEY_REAL, "-", "", FSI_BOUND_MIN_OPEN | FSI_BOUND_MAX, 0, 1,
+     NULL, "WCSPH's own acoustic step factor, dt <= factor h / (c0 + |v|max), in place of "
+     "[fluid] cfl_acoustic (empty: that one), for a case whose schemes are stable at "
+     "different steps."},
     {"neighbour_skin", FSI_KEY_REAL, "-", STR(FLUID_VERLET_SKIN), FSI_BOUND_MIN | FSI_BOUND_MAX, 0,
      1, NULL, "Skin of the candidate neighbour lists as a fraction of the support 2h; 0 "
      "rebuilds them at every evaluation. The neighbours within the support, and so the "
