@@ -124,14 +124,11 @@ static void check_step(fsi_case_checker *k, const char *role)
                              sqrt(fsi_case_get_real(k->c, role, "max_pressure", 0.0) / l.density)
                          ? "max_velocity"
                          : "max_pressure";
-        const int own_factor = fsi_case_get_real(k->c, own, "acoustic_step_factor", 0.0) > 0.0;
         const fsi_step_factor f[] = {{role, c0_key, l.sound_speed, 1480.0, -1.0},
                                      {role, "spacing", dx, 1e-3, 1.0},
                                      {own, "smoothing_factor", sf, 1.2, 1.0},
-                                     own_factor ? (fsi_step_factor){own, "acoustic_step_factor",
-                                                                    l.cfl_acoustic, 0.25, 1.0}
-                                                : (fsi_step_factor){role, "cfl_acoustic",
-                                                                    l.cfl_acoustic, 0.25, 1.0}};
+                                     {l.cfl_acoustic_section, l.cfl_acoustic_key,
+                                      l.cfl_acoustic, 0.25, 1.0}};
         snprintf(what, sizeof what, "the fluid's acoustic step limit cfl_acoustic h / c0 = "
                  "%g * %g m / %g m/s", l.cfl_acoustic, l.h, l.sound_speed);
         fsi_case_check_step(k, acoustic, what, f, (int)(sizeof f / sizeof f[0]));

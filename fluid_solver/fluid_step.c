@@ -25,9 +25,11 @@ void fluid_step_limits_read(fluid_step_limits *l, const fsi_case *c, const char 
            fsi_case_get_real(c, role, "spacing", 0.0);
     /* A scheme may set its own acoustic factor in its section (acoustic_step_factor:
      * the schemes' stable steps differ and a case carries several); else [fluid]'s. */
-    l->cfl_acoustic = fsi_case_get_real(c, fsi_case_solver_section(c, role),
-                                        "acoustic_step_factor",
-                                        fsi_case_get_real(c, role, "cfl_acoustic", 0.25));
+    const char *own = fsi_case_solver_section(c, role);
+    const int own_factor = fsi_case_get_real(c, own, "acoustic_step_factor", 0.0) > 0.0;
+    l->cfl_acoustic_section = own_factor ? own : role;
+    l->cfl_acoustic_key = own_factor ? "acoustic_step_factor" : "cfl_acoustic";
+    l->cfl_acoustic = fsi_case_get_real(c, l->cfl_acoustic_section, l->cfl_acoustic_key, 0.25);
     l->cfl_viscous = fsi_case_get_real(c, role, "cfl_viscous", 0.125);
     l->cfl_force = fsi_case_get_real(c, role, "cfl_force", 0.25);
 }

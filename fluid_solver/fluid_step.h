@@ -18,6 +18,8 @@ typedef struct {
     double density;             /* rho0 [kg/m^3] */
     double viscosity;           /* mu [Pa s] */
     double cfl_acoustic, cfl_viscous, cfl_force;
+    const char *cfl_acoustic_section, *cfl_acoustic_key; /* where cfl_acoustic was read:
+                                 * the scheme's acoustic_step_factor or [fluid]'s */
 } fluid_step_limits;
 
 /* c0 from [role] sound_speed, or 000 Eq. 7 when it is 0:

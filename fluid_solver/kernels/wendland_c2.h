@@ -48,6 +48,14 @@ static inline void wendland_c2_eval2(const wendland_c2_kernel *k, double r2, dou
     *f = k->grad_scale * s3;
 }
 
+/* F = (dW/dr) / r at squared distance r2, which must be inside the support (no test:
+ * for loops over pairs already filtered). */
+static inline double wendland_c2_f_inside(const wendland_c2_kernel *k, double r2)
+{
+    const double s = 2.0 - sqrt(r2) * k->inv_h;
+    return k->grad_scale * s * s * s;
+}
+
 /* W at distance r. */
 static inline double wendland_c2_w(const wendland_c2_kernel *k, double r)
 {

@@ -30,6 +30,22 @@ static inline void fluid_pair_vector(const fluid_pairs *pairs, const double *x, 
     fsi_periodic_min_image(&pairs->periodic, rel);
 }
 
+/* The same from a periodic description (NULL: none), with |x_IJ|^2 returned: for a
+ * scheme that walks its own rows (WCSPH); a pair seen from either row gives the same
+ * numbers. */
+static inline double fluid_pair_vector_r2(const fsi_periodic *per, const double *x, int i,
+                                          int j, double *rel)
+{
+    double r2 = 0.0;
+    for (int d = 0; d < FSI_DIM; d++)
+        rel[d] = x[(int64_t)j * FSI_DIM + d] - x[(int64_t)i * FSI_DIM + d];
+    if (per)
+        fsi_periodic_min_image(per, rel);
+    for (int d = 0; d < FSI_DIM; d++)
+        r2 += rel[d] * rel[d];
+    return r2;
+}
+
 /* The entry of J in I's row (the same pair data every pass over I's row reads), or -1
  * when J is not I's neighbour. */
 static inline int64_t fluid_pairs_find(const fluid_pairs *pairs, int i, int j)

@@ -71,7 +71,7 @@ void wcsph_walls(const wcsph_neighbours *nb, const tait_eos *eos, const double *
             if (!(p->flags[f] & FLUID_PARTICLE_FLUID))
                 continue;
             double xsf[FSI_DIM], w, unused;
-            wendland_c2_eval2(k, wcsph_pair_vector(per, p->x, s, f, xsf), &w, &unused);
+            wendland_c2_eval2(k, fluid_pair_vector_r2(per, p->x, s, f, xsf), &w, &unused);
             if (w > 0.0)
                 ghost_wall_sums_add(&g, p, f, w, xsf);
         }
@@ -169,7 +169,7 @@ static ALWAYS_INLINE void gradient_block(const wcsph_neighbours *nb, const wcsph
             if (!wcsph_in_sums(prm, p, j))
                 continue;
             double rel[FSI_DIM];
-            wcsph_pair_vector(per, x, i, j, rel);
+            fluid_pair_vector_r2(per, x, i, j, rel);
             gradient_one_sided(p, u, i, j, rel, pair_f[e], gu, bs, gr, stress, antuono);
         }
         for (int a = 0; a < FSI_MAT_SIZE; a++) {
@@ -191,10 +191,10 @@ static void gradient_boundary_row(const wcsph_neighbours *nb, const wcsph_params
     for (int64_t c = list->offset[i]; c < list->offset[i + 1]; c++) {
         const int j = list->candidate[c];
         double rel[FSI_DIM];
-        const double r2 = wcsph_pair_vector(per, p->x, i, j, rel);
+        const double r2 = fluid_pair_vector_r2(per, p->x, i, j, rel);
         if (!(r2 < nb->kernel->support2) || !wcsph_in_sums(prm, p, j))
             continue;
-        gradient_one_sided(p, u, i, j, rel, wcsph_kernel_f(nb->kernel, r2),
+        gradient_one_sided(p, u, i, j, rel, wendland_c2_f_inside(nb->kernel, r2),
                            &s->tau_rho2[(size_t)i * FSI_MAT_SIZE],
                            &s->renorm_sum[(size_t)i * FSI_MAT_SIZE],
                            &s->density_gradient[i * FSI_DIM], stress, antuono);
@@ -475,7 +475,7 @@ static ALWAYS_INLINE long long rates_block(const wcsph_neighbours *nb, const pai
         for (int64_t e = rows->split[i]; e < rows->boundary_end[i]; e++) {
             const int j = pair[e];
             double rel[FSI_DIM], a[FSI_DIM], d_div, d_diff;
-            const double r2 = wcsph_pair_vector(per, xs, i, j, rel);
+            const double r2 = fluid_pair_vector_r2(per, xs, i, j, rel);
             boundary_pair(c, i, j, rel, r2, pair_f[e], a, &d_div, &d_diff);
             for (int d = 0; d < FSI_DIM; d++)
                 acc[d] += a[d];
@@ -559,10 +559,10 @@ void wcsph_density_diffusion(const wcsph_neighbours *nb, const wcsph_params *prm
              (p->flags[i] & FLUID_PARTICLE_FLUID) && e < list->offset[i + 1]; e++) {
             const int j = list->candidate[e];
             double rel[FSI_DIM];
-            const double r2 = wcsph_pair_vector(per, p->x, i, j, rel);
+            const double r2 = fluid_pair_vector_r2(per, p->x, i, j, rel);
             if (!(r2 < nb->kernel->support2) || !wcsph_in_sums(prm, p, j))
                 continue;
-            const double f = wcsph_kernel_f(nb->kernel, r2), drho = p->density[j] - p->density[i];
+            const double f = wendland_c2_f_inside(nb->kernel, r2), drho = p->density[j] - p->density[i];
             const double *gi = &s->density_gradient[i * FSI_DIM];
             const double *gj = (p->flags[j] & FLUID_PARTICLE_FLUID)
                                    ? &s->density_gradient[j * FSI_DIM] : gi;
@@ -598,10 +598,10 @@ void wcsph_boundary_loads(const wcsph_neighbours *nb, const wcsph_params *prm,
                 continue;
             /* the pair as I's row sees it */
             double rel[FSI_DIM], a[FSI_DIM], d_div, d_diff;
-            const double r2 = wcsph_pair_vector(per, p->x, i, b, rel);
+            const double r2 = fluid_pair_vector_r2(per, p->x, i, b, rel);
             if (!(r2 < nb->kernel->support2))
                 continue;
-            boundary_pair(&c, i, b, rel, r2, wcsph_kernel_f(nb->kernel, r2), a, &d_div, &d_diff);
+            boundary_pair(&c, i, b, rel, r2, wendland_c2_f_inside(nb->kernel, r2), a, &d_div, &d_diff);
             for (int d = 0; d < FSI_DIM; d++)
                 f_b[d] -= p->mass[i] * a[d];
         }
@@ -621,11 +621,11 @@ void wcsph_gradient(const wcsph_neighbours *nb, const wcsph_params *prm,
         for (int64_t e = list->offset[i]; e < list->offset[i + 1]; e++) {
             const int j = list->candidate[e];
             double rel[FSI_DIM];
-            const double r2 = wcsph_pair_vector(per, p->x, i, j, rel);
+            const double r2 = fluid_pair_vector_r2(per, p->x, i, j, rel);
             if (!(r2 < nb->kernel->support2) || !wcsph_in_sums(prm, p, j))
                 continue;
             /* V_J grad_I W_IJ = -V_J F x_IJ */
-            const double vf = -p->volume[j] * wcsph_kernel_f(nb->kernel, r2);
+            const double vf = -p->volume[j] * wendland_c2_f_inside(nb->kernel, r2);
             double gw[FSI_DIM];
             for (int d = 0; d < FSI_DIM; d++) {
                 gw[d] = vf * rel[d];

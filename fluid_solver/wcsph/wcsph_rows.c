@@ -127,10 +127,10 @@ static inline int64_t filter_segment(wcsph_rows *r, const wendland_c2_kernel *k,
     for (int64_t e = lo; e < hi; e++) {
         const int j = r->neighbour[e];
         double rel[FSI_DIM];
-        const double r2 = wcsph_pair_vector(per, x, i, j, rel);
+        const double r2 = fluid_pair_vector_r2(per, x, i, j, rel);
         const int inside = r2 < k->support2;
         r->pair[m] = j;
-        r->f[m] = wcsph_kernel_f(k, r2) * (double)inside; /* no branch */
+        r->f[m] = wendland_c2_f_inside(k, r2) * (double)inside; /* no branch */
         m += inside;
     }
     return m;

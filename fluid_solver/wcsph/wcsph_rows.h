@@ -28,6 +28,7 @@
 #include <stdint.h>
 
 #include "fluid_particles.h"
+#include "fluid_pairs.h"
 #include "verlet_list.h"
 #include "wendland_c2.h"
 
@@ -44,7 +45,7 @@ typedef struct {
     double *f;
     int n_blocks;
     int *block_start;       /* n_blocks + 1 */
-    int point_capacity, block_capacity;
+    int point_capacity;
     int64_t pair_capacity;
 } wcsph_rows;
 
@@ -58,28 +59,5 @@ int wcsph_rows_build(wcsph_rows *r, const fluid_verlet *list, const fluid_partic
 /* The pairs of the rows now within k's support, and their F (above). */
 void wcsph_rows_filter(wcsph_rows *r, const wendland_c2_kernel *k, const fsi_periodic *per,
                        const fluid_particles *p);
-
-/* x_IJ = x_J - x_I (nearest image when per is not NULL) and |x_IJ|^2: every WCSPH pass
- * takes a pair's vector from here, so a pair seen from either row gives the same
- * numbers. */
-static inline double wcsph_pair_vector(const fsi_periodic *per, const double *x, int i, int j,
-                                       double *rel)
-{
-    double r2 = 0.0;
-    for (int d = 0; d < FSI_DIM; d++)
-        rel[d] = x[(int64_t)j * FSI_DIM + d] - x[(int64_t)i * FSI_DIM + d];
-    if (per)
-        fsi_periodic_min_image(per, rel);
-    for (int d = 0; d < FSI_DIM; d++)
-        r2 += rel[d] * rel[d];
-    return r2;
-}
-
-/* F = (dW/dr) / r of the Wendland C2 kernel (wendland_c2.h) at r^2 inside the support. */
-static inline double wcsph_kernel_f(const wendland_c2_kernel *k, double r2)
-{
-    const double s = 2.0 - sqrt(r2) * k->inv_h;
-    return k->grad_scale * s * s * s;
-}
 
 #endif
