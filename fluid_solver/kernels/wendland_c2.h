@@ -16,6 +16,7 @@
 #define FSI_WENDLAND_C2_H
 
 #include <math.h>
+#include <stdint.h>
 
 typedef struct {
     double h;           /* smoothing length [m] */
@@ -54,6 +55,14 @@ static inline double wendland_c2_f_inside(const wendland_c2_kernel *k, double r2
 {
     const double s = 2.0 - sqrt(r2) * k->inv_h;
     return k->grad_scale * s * s * s;
+}
+
+/* F over a row of pairs: r2_f[q] = F(r2_f[q]) for n squared distances all inside the
+ * support (in place; the loop has no call and no branch, so it vectorises). */
+static inline void wendland_c2_f_row(const wendland_c2_kernel *k, double *r2_f, int64_t n)
+{
+    for (int64_t q = 0; q < n; q++)
+        r2_f[q] = wendland_c2_f_inside(k, r2_f[q]);
 }
 
 /* W at distance r. */

@@ -35,6 +35,11 @@ static const fsi_key_spec keys[] = {
      "solid particle closer than one spacing, k c0^2 (1 - r / dx) f(r / 0.75 h) / r "
      "(004 Eqs. 21-24, k = 0.01 there; docs/ulph.md): it keeps thin, fast layers without "
      "pressure out of walls and solids. Zero at one spacing and beyond; 0 turns it off."},
+    {"integrator", FSI_KEY_CHOICE, "-", "predictor_corrector", 0, 0, 0,
+     "predictor_corrector|verlet",
+     "predictor_corrector: the predictor-corrector of 000 Eq. 56 (two evaluations of the "
+     "rates a step); verlet: Monaghan's Verlet scheme (one evaluation a step, an Euler step "
+     "every 40 and after every density filter; docs/ulph.md)."},
     {"tension", FSI_KEY_BOOL, "-", "false", 0, 0, 0, NULL,
      "false: the water does not sustain tension, a fluid particle's density is kept at or "
      "above rho0 (p >= 0, gauge against the atmosphere above a free surface; docs/ulph.md); "

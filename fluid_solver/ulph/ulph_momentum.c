@@ -6,7 +6,6 @@
 #include <string.h>
 
 #include "small_tensor.h"
-#include "pair_reaction.h"
 #include "soft_contact.h"
 
 int ulph_momentum_reserve(ulph_momentum_scratch *s, int n)
@@ -17,8 +16,7 @@ int ulph_momentum_reserve(ulph_momentum_scratch *s, int n)
     const size_t m = (size_t)(n > 0 ? n : 1);
     s->velocity_gradient = malloc(m * FSI_MAT_SIZE * sizeof(double));
     s->stress_shape = malloc(m * FSI_MAT_SIZE * sizeof(double));
-    s->divergence = malloc(m * sizeof(double));
-    if (!s->velocity_gradient || !s->stress_shape || !s->divergence) {
+    if (!s->velocity_gradient || !s->stress_shape) {
         ulph_momentum_free(s);
         return -1;
     }
@@ -30,7 +28,6 @@ void ulph_momentum_free(ulph_momentum_scratch *s)
 {
     free(s->velocity_gradient);
     free(s->stress_shape);
-    free(s->divergence);
     memset(s, 0, sizeof *s);
 }
 
@@ -58,57 +55,153 @@ typedef struct {
     const double *A;            /* sigma M^-1 per particle */
     double av, eps2, mu_laplacian;
     double contact_k_c2, spacing, contact_inv_eta_scale; /* soft_contact.h */
+    double *force, *divergence; /* the rates' accumulators (force density, div v) */
 } pair_context;
 
-/* The force density on fluid particle I from neighbour J (entry k of I's row); the
- * force on I is V_I times it. trace_i = tr M_I, taken once per row by the caller. */
-static inline void pair_force(const pair_context *c, int i, int64_t k, double trace_i,
-                              double *out)
+/* The force density on fluid particle I from boundary (wall or solid) particle J at
+ * x_IJ = rel, |x_IJ|^2 = r2, kernel w, and the pair's share of div v_I (the
+ * walls' own velocity: a wall is no source of fluid). The force on I is V_I times it. */
+static inline void boundary_pair(const pair_context *c, int i, int j, const double *rel,
+                                 double r2, double w, double *out, double *div)
 {
     const ulph_operators *ops = c->ops;
     const fluid_particles *p = c->p;
-    const int j = ops->pairs.neighbour[k];
     const double *Ai = &c->A[(size_t)i * FSI_MAT_SIZE], *Aj = &c->A[(size_t)j * FSI_MAT_SIZE];
-    double xij[FSI_DIM], vx = 0.0, r2 = 0.0, sum[FSI_MAT_SIZE];
-    ulph_pair_vector(ops, p->x, i, j, xij);
+    const double *m_inv = &ops->shape_inv[(size_t)i * FSI_MAT_SIZE];
+    double vx = 0.0, sum[FSI_MAT_SIZE], f[FSI_DIM], y[FSI_DIM], dv = 0.0;
+    fsi_mat_vec(m_inv, rel, y);
     for (int d = 0; d < FSI_DIM; d++) {
-        vx += (c->vv[j * FSI_DIM + d] - p->v[i * FSI_DIM + d]) * xij[d];
-        r2 += xij[d] * xij[d];
+        vx += (c->vv[j * FSI_DIM + d] - p->v[i * FSI_DIM + d]) * rel[d];
+        dv += (p->v[j * FSI_DIM + d] - p->v[i * FSI_DIM + d]) * y[d];
     }
     for (int m = 0; m < FSI_MAT_SIZE; m++)
         sum[m] = Ai[m] + Aj[m];
-    double f[FSI_DIM];
-    fsi_mat_vec(sum, xij, f);
-    const double wv = ops->pairs.w[k] * p->volume[j];
-    /* g_IJ = w V_J M_I^-1 x_IJ (ulph_operators.h): 000 Eq. 26 per pair. */
-    /* min(vx, 0) rather than a branch around the division: the sign of vx is a coin
-     * toss per pair (a mispredicted branch each time), and av * 0 / (r2 + eps2) is 0. */
+    fsi_mat_vec(sum, rel, f);
+    const double wv = w * p->volume[j];
+    *div = wv * dv;
+    /* 000 Eq. 26 per pair: pi_IJ g_IJ with g_IJ = w V_J M_I^-1 x_IJ. */
     const double approach = vx < 0.0 ? vx : 0.0;
     const double pi_ij = c->av * approach / (r2 + c->eps2);
     /* A wall pushes, never pulls: with p_I < 0 the pair's -p_I M_I^-1 term would draw I
      * into the wall, so p_I counts as 0 against a wall. */
-    const int against_wall = !(p->flags[j] & FLUID_PARTICLE_FLUID);
-    const double tension = against_wall && p->pressure[i] < 0.0 ? p->pressure[i] : 0.0;
+    const double tension = p->pressure[i] < 0.0 ? p->pressure[i] : 0.0;
     for (int d = 0; d < FSI_DIM; d++)
-        out[d] = wv * f[d] + (pi_ij + tension) * ops->g[k * FSI_DIM + d];
-    if (against_wall && c->contact_k_c2 > 0.0) {
+        out[d] = wv * (f[d] + (pi_ij + tension) * y[d]);
+    if (c->contact_k_c2 > 0.0) {
         /* The pair's distance at rest, the mean of the two spacings: a solid may be
          * sampled finer or coarser than the fluid (its spacing from its volume). */
         const double range = 0.5 * (c->spacing + fluid_particle_side(p->volume[j]));
         if (r2 < range * range) {
-            /* 004 Eq. 21 as a force density on I: rho_I a_IJ, along x_I - x_J = -xij. */
+            /* 004 Eq. 21 as a force density on I: rho_I a_IJ, along x_I - x_J = -rel. */
             const double push = p->density[i] *
                                 soft_contact_factor(sqrt(r2), range, c->contact_k_c2,
                                                     c->contact_inv_eta_scale);
             for (int d = 0; d < FSI_DIM; d++)
-                out[d] -= push * xij[d];
+                out[d] -= push * rel[d];
         }
     }
     if (c->mu_laplacian > 0.0) {
+        const double trace_i = fsi_mat_trace(&ops->shape[(size_t)i * FSI_MAT_SIZE]);
         const double trace_j = fsi_mat_trace(&ops->shape[(size_t)j * FSI_MAT_SIZE]);
         const double lap = c->mu_laplacian * 4.0 * FSI_DIM * wv / (trace_i + trace_j);
         for (int d = 0; d < FSI_DIM; d++)
             out[d] += lap * (c->vv[j * FSI_DIM + d] - c->vv[i * FSI_DIM + d]);
+    }
+}
+
+/* The rates' sums of the fluid particles of [lo, hi): each fluid pair once, written to
+ * both (antisymmetric terms), each boundary pair on I's side. For a fluid pair
+ * (vv = v for fluid particles), with y_I = M_I^-1 x_IJ, y_J = M_J^-1 x_IJ,
+ *   Q = w (A_I + A_J) x_IJ + mu_lap 4 DIM w / (tr M_I + tr M_J) (v_J - v_I),
+ *   f_I += V_J (Q + pi_IJ y_I),  f_J -= V_I (Q + pi_IJ y_J)     (000 Eqs. 23, 26)
+ *   div_I += w V_J (v_J - v_I) . y_I,  div_J += w V_I (v_J - v_I) . y_J   (000 Eq. 16)
+ * (seen from J, x_JI = -x_IJ and v_I - v_J change sign together). */
+static void rates_block(void *context, int lo, int hi)
+{
+    const pair_context *c = context;
+    const ulph_operators *ops = c->ops;
+    const fluid_rows *rows = &ops->rows;
+    const fluid_particles *p = c->p;
+    const double *restrict xs = p->x, *restrict vs = p->v, *restrict vol = p->volume;
+    const double *restrict A = c->A, *restrict shape = ops->shape;
+    const double *restrict shape_inv = ops->shape_inv, *restrict pair_w = rows->f;
+    const int32_t *restrict pair = rows->pair;
+    double *restrict force = c->force, *restrict div = c->divergence;
+    const double av = c->av, eps2 = c->eps2, lap_scale = c->mu_laplacian * 4.0 * FSI_DIM;
+    const int laplacian = c->mu_laplacian > 0.0;
+    for (int i = lo; i < hi; i++) {
+        if (!(p->flags[i] & FLUID_PARTICLE_FLUID))
+            continue;
+        double x_i[FSI_DIM], v_i[FSI_DIM], A_i[FSI_MAT_SIZE], Minv_i[FSI_MAT_SIZE];
+        for (int d = 0; d < FSI_DIM; d++) {
+            x_i[d] = xs[i * FSI_DIM + d];
+            v_i[d] = vs[i * FSI_DIM + d];
+        }
+        for (int m = 0; m < FSI_MAT_SIZE; m++) {
+            A_i[m] = A[(size_t)i * FSI_MAT_SIZE + m];
+            Minv_i[m] = shape_inv[(size_t)i * FSI_MAT_SIZE + m];
+        }
+        const double vol_i = vol[i], tr_i = fsi_mat_trace(&shape[(size_t)i * FSI_MAT_SIZE]);
+        double f_i[FSI_DIM] = {0}, div_i = 0.0;
+        const int periodic = fsi_periodic_any(&ops->periodic);
+        for (int64_t e = rows->offset[i]; e < rows->fluid_end[i]; e++) {
+            const int j = pair[e];
+            const double w = pair_w[e];
+            const double *A_j = &A[(size_t)j * FSI_MAT_SIZE];
+            const double *Minv_j = &shape_inv[(size_t)j * FSI_MAT_SIZE];
+            double rel[FSI_DIM], dv[FSI_DIM], r2 = 0.0, vx = 0.0;
+            for (int d = 0; d < FSI_DIM; d++)
+                rel[d] = xs[j * FSI_DIM + d] - x_i[d];
+            if (periodic)
+                fsi_periodic_min_image(&ops->periodic, rel);
+            for (int d = 0; d < FSI_DIM; d++) {
+                r2 += rel[d] * rel[d];
+                dv[d] = vs[j * FSI_DIM + d] - v_i[d];
+                vx += dv[d] * rel[d];
+            }
+            double q[FSI_DIM], y_i[FSI_DIM], y_j[FSI_DIM];
+            for (int a = 0; a < FSI_DIM; a++) {
+                double sq = 0.0, si = 0.0, sj = 0.0;
+                for (int b = 0; b < FSI_DIM; b++) {
+                    sq += (A_i[a * FSI_DIM + b] + A_j[a * FSI_DIM + b]) * rel[b];
+                    si += Minv_i[a * FSI_DIM + b] * rel[b];
+                    sj += Minv_j[a * FSI_DIM + b] * rel[b];
+                }
+                q[a] = w * sq;
+                y_i[a] = si;
+                y_j[a] = sj;
+            }
+            if (laplacian) {
+                const double tr_j = fsi_mat_trace(&shape[(size_t)j * FSI_MAT_SIZE]);
+                const double lap = lap_scale * w / (tr_i + tr_j);
+                for (int d = 0; d < FSI_DIM; d++)
+                    q[d] += lap * dv[d];
+            }
+            /* 000 Eq. 27: only approaching pairs (a select, not a branch) */
+            const double pi_w = w * av * (vx < 0.0 ? vx : 0.0) / (r2 + eps2);
+            const double vol_j = vol[j];
+            double dvy_i = 0.0, dvy_j = 0.0;
+            for (int d = 0; d < FSI_DIM; d++) {
+                f_i[d] += vol_j * (q[d] + pi_w * y_i[d]);
+                force[j * FSI_DIM + d] -= vol_i * (q[d] + pi_w * y_j[d]);
+                dvy_i += dv[d] * y_i[d];
+                dvy_j += dv[d] * y_j[d];
+            }
+            div_i += w * vol_j * dvy_i;
+            div[j] += w * vol_i * dvy_j;
+        }
+        for (int64_t e = rows->split[i]; e < rows->boundary_end[i]; e++) {
+            const int j = pair[e];
+            double rel[FSI_DIM], out[FSI_DIM], d_div;
+            const double r2 = ulph_pair_vector(ops, xs, i, j, rel);
+            boundary_pair(c, i, j, rel, r2, pair_w[e], out, &d_div);
+            for (int d = 0; d < FSI_DIM; d++)
+                f_i[d] += out[d];
+            div_i += d_div;
+        }
+        for (int d = 0; d < FSI_DIM; d++)
+            force[i * FSI_DIM + d] += f_i[d];
+        div[i] += div_i;
     }
 }
 
@@ -120,7 +213,7 @@ static pair_context make_context(const ulph_operators *ops, const ulph_momentum_
                           0.01 * prm->h * prm->h,
                           prm->viscous_laplacian ? prm->viscosity : 0.0,
                           prm->contact * prm->c0 * prm->c0, prm->spacing,
-                          1.0 / (0.75 * prm->h)};
+                          1.0 / (0.75 * prm->h), NULL, NULL};
 }
 
 void ulph_momentum_rates(const ulph_operators *ops, const ulph_momentum_params *prm,
@@ -130,19 +223,22 @@ void ulph_momentum_rates(const ulph_operators *ops, const ulph_momentum_params *
     const int n = p->n;
     double *L = scratch->velocity_gradient, *A = scratch->stress_shape;
     const double mu_stress = prm->viscous_laplacian ? 0.0 : prm->viscosity;
-    if (prm->viscous_laplacian)
-        memset(L, 0, (size_t)n * FSI_MAT_SIZE * sizeof *L);
-    else
-        ulph_gradient_vector(ops, velocity_for_viscosity, L);
-    /* Continuity sees the walls' own velocity (no penetration), not the virtual one. */
-    ulph_divergence(ops, p->v, scratch->divergence);
-#pragma omp parallel for schedule(dynamic, FLUID_CHUNK) if (n >= FLUID_PARALLEL_MIN_PARTICLES)
-    for (int i = 0; i < n; i++)
+    if (!prm->viscous_laplacian)
+        ulph_gradient_vector(ops, p, velocity_for_viscosity, L);
+#pragma omp parallel for schedule(static) if (n >= FLUID_PARALLEL_MIN_PARTICLES)
+    for (int i = 0; i < n; i++) {
+        if (prm->viscous_laplacian)
+            fsi_mat_zero(&L[(size_t)i * FSI_MAT_SIZE]);
         stress_shape(ops, p, mu_stress, &L[(size_t)i * FSI_MAT_SIZE], i,
                      &A[(size_t)i * FSI_MAT_SIZE]);
-
-    const pair_context c = make_context(ops, prm, p, velocity_for_viscosity, A);
-#pragma omp parallel for schedule(dynamic, FLUID_CHUNK) if (n >= FLUID_PARALLEL_MIN_PARTICLES)
+        drho_dt[i] = 0.0; /* div v_I for now */
+        memset(&dv_dt[i * FSI_DIM], 0, FSI_DIM * sizeof *dv_dt); /* the force density */
+    }
+    pair_context c = make_context(ops, prm, p, velocity_for_viscosity, A);
+    c.force = dv_dt;
+    c.divergence = drho_dt;
+    ulph_for_blocks(ops, rates_block, &c);
+#pragma omp parallel for schedule(static) if (n >= FLUID_PARALLEL_MIN_PARTICLES)
     for (int i = 0; i < n; i++) {
         double *a_i = &dv_dt[i * FSI_DIM];
         if (!(p->flags[i] & FLUID_PARTICLE_FLUID)) {
@@ -150,25 +246,10 @@ void ulph_momentum_rates(const ulph_operators *ops, const ulph_momentum_params *
             memset(a_i, 0, FSI_DIM * sizeof *a_i);
             continue;
         }
-        drho_dt[i] = -p->density[i] * scratch->divergence[i];
-        double force[FSI_DIM] = {0};
-        const double trace_i = fsi_mat_trace(&ops->shape[(size_t)i * FSI_MAT_SIZE]);
-        for (int64_t k = ops->pairs.offset[i]; k < ops->pairs.offset[i + 1]; k++) {
-            double f[FSI_DIM];
-            pair_force(&c, i, k, trace_i, f);
-            for (int d = 0; d < FSI_DIM; d++)
-                force[d] += f[d];
-        }
+        drho_dt[i] = -p->density[i] * drho_dt[i];
         for (int d = 0; d < FSI_DIM; d++)
-            a_i[d] = force[d] / p->density[i] + prm->gravity[d];
+            a_i[d] = a_i[d] / p->density[i] + prm->gravity[d];
     }
-}
-
-/* The force density on I from entry k of its row, for fluid_pair_reaction. */
-static void pair_term(const void *context, int i, int64_t k, double *out)
-{
-    const pair_context *c = context;
-    pair_force(c, i, k, fsi_mat_trace(&c->ops->shape[(size_t)i * FSI_MAT_SIZE]), out);
 }
 
 void ulph_boundary_loads(const ulph_operators *ops, const ulph_momentum_params *prm,
@@ -177,5 +258,25 @@ void ulph_boundary_loads(const ulph_operators *ops, const ulph_momentum_params *
 {
     const pair_context c = make_context(ops, prm, p, velocity_for_viscosity,
                                         scratch->stress_shape);
-    fluid_pair_reaction(&ops->pairs, p, p->volume, pair_term, &c, force);
+    const fluid_rows *rows = &ops->rows;
+    const int n = p->n;
+#pragma omp parallel for schedule(dynamic, FLUID_CHUNK) if (n >= FLUID_PARALLEL_MIN_PARTICLES)
+    for (int b = 0; b < n; b++) {
+        double *f_b = &force[b * FSI_DIM];
+        memset(f_b, 0, FSI_DIM * sizeof *f_b);
+        if (!(p->flags[b] & FLUID_PARTICLE_MOVING_BOUNDARY))
+            continue;
+        /* B's own row holds its fluid neighbours I with the pair's w (w_IB = w_BI); the
+         * pair as I's row sees it. */
+        for (int64_t e = rows->split[b]; e < rows->boundary_end[b]; e++) {
+            const int i = rows->pair[e];
+            if (!(p->flags[i] & FLUID_PARTICLE_FLUID))
+                continue;
+            double rel[FSI_DIM], out[FSI_DIM], d_div;
+            const double r2 = ulph_pair_vector(ops, p->x, i, b, rel);
+            boundary_pair(&c, i, b, rel, r2, rows->f[e], out, &d_div);
+            for (int d = 0; d < FSI_DIM; d++)
+                f_b[d] -= p->volume[i] * out[d];
+        }
+    }
 }

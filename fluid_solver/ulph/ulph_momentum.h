@@ -18,10 +18,10 @@ typedef struct {
 } ulph_momentum_params;
 
 /* Scratch the rates need, n particles each: velocity gradient L (FSI_MAT_SIZE),
- * sigma M^-1 (FSI_MAT_SIZE), divergence (1). */
+ * sigma M^-1 (FSI_MAT_SIZE). */
 typedef struct {
     int capacity;
-    double *velocity_gradient, *stress_shape, *divergence;
+    double *velocity_gradient, *stress_shape;
 } ulph_momentum_scratch;
 
 int ulph_momentum_reserve(ulph_momentum_scratch *s, int n);
@@ -46,8 +46,9 @@ void ulph_momentum_free(ulph_momentum_scratch *s);
  * first moment vanishes, since sum_J w V_J x_IJ (x) x_IJ = M_I) and tau drops out of
  * sigma: the nested gradients of Eq. 23 cannot see a field that alternates from one
  * particle row to the next (its gradient is zero at every particle), so such a mode is
- * never damped (docs/ulph.md, plane Poiseuille flow). The pair terms are antisymmetric:
- * momentum is conserved exactly.
+ * never damped (docs/ulph.md, plane Poiseuille flow). The pressure, viscous and
+ * Laplacian pair terms are antisymmetric: momentum is conserved exactly. Each pair of
+ * fluid particles is evaluated once and written to both (ulph_operators.h).
  * A wall pushes, never pulls: against a wall or moving boundary particle a fluid
  * particle's pressure counts as max(p_I, 0) (with tension = true p_I may be negative,
  * and -p_I M_I^-1 would draw I into the wall).
@@ -63,7 +64,8 @@ void ulph_momentum_rates(const ulph_operators *ops, const ulph_momentum_params *
  * reaction of the pair terms between B and its fluid neighbours I,
  *     F_B = - sum_I V_I f_IB,
  * f_IB the force density on I from B in the momentum equation (pressure, viscous,
- * artificial viscous, contact). The forces on fluid and boundary therefore balance to round-off
+ * artificial viscous, contact), computed by the same code as the rates' term over B's
+ * own row. The forces on fluid and boundary therefore balance to round-off
  * (tests/unit/test_ulph_scheme.c) whatever the pair terms' symmetry. */
 void ulph_boundary_loads(const ulph_operators *ops, const ulph_momentum_params *prm,
                          const fluid_particles *p, const double *velocity_for_viscosity,

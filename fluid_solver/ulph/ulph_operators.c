@@ -1,13 +1,10 @@
-/* The non-local operators of ULPH (000 Eqs. 8-15) over a CSR neighbour list built
- * each evaluation from candidate lists (verlet_list.h): see ulph_operators.h.
+/* The non-local operators of ULPH (000 Eqs. 8-15) over pair-once rows derived from
+ * candidate lists (fluid_rows.h): see ulph_operators.h.
  *
- * The build makes two passes over the particles, each parallel with no shared
- * writes: pass 1 counts each particle's candidates within the support (its row
- * length), a serial prefix sum turns the counts into row offsets, pass 2 fills each
- * row (J, w, x_IJ), sums M_I over it (000 Eq. 15), inverts M_I under the rule of the
- * header, and turns x_IJ into g_IJ = w V_J M_I^-1 x_IJ in place. Both passes walk the
- * candidates in their fixed order, so they see the same neighbours in the same order
- * on any thread. */
+ * An update filters the rows to the pairs within the support and turns their r^2 into
+ * w in a loop of its own (gaussian_kernel_w2_row: no call, no branch), then sums M over
+ * the pairs in blocks (each fluid pair once, added to both particles), then inverts
+ * each M_I under the rule of the header. */
 #include "ulph_operators.h"
 
 #include <stdlib.h>
@@ -18,19 +15,19 @@
 void ulph_operators_init(ulph_operators *ops)
 {
     *ops = (ulph_operators){0};
+    fluid_rows_init(&ops->rows);
     ops->max_condition = ULPH_MAX_CONDITION_M;
 }
 
 void ulph_operators_free(ulph_operators *ops)
 {
     const double max_condition = ops->max_condition;
-    free(ops->pairs.offset);
-    free(ops->pairs.neighbour);
-    free(ops->pairs.w);
-    free(ops->g);
+    fluid_rows_free(&ops->rows);
+    free(ops->neighbours);
     free(ops->shape);
     free(ops->shape_inv);
     free(ops->flags);
+    free(ops->informative);
     ulph_operators_init(ops);
     ops->max_condition = max_condition;
 }
@@ -38,14 +35,15 @@ void ulph_operators_free(ulph_operators *ops)
 /* Room for n particles; 0, or -1 when memory runs out. */
 static int reserve_points(ulph_operators *ops, int n)
 {
-    if (ops->pairs.offset && n <= ops->point_capacity)
+    if (ops->shape && n <= ops->point_capacity)
         return 0;
-    const size_t cap = (size_t)n + (size_t)n / 4 + 16;
+    const size_t cap = fsi_grown_capacity((size_t)n);
     int failed = 0;
-    ops->pairs.offset = fsi_grow(ops->pairs.offset, (cap + 1) * sizeof *ops->pairs.offset, &failed);
+    ops->neighbours = fsi_grow(ops->neighbours, cap * sizeof *ops->neighbours, &failed);
+    ops->informative = fsi_grow(ops->informative, cap * sizeof *ops->informative, &failed);
     ops->shape = fsi_grow(ops->shape, cap * FSI_MAT_SIZE * sizeof *ops->shape, &failed);
     ops->shape_inv = fsi_grow(ops->shape_inv, cap * FSI_MAT_SIZE * sizeof *ops->shape_inv,
-                               &failed);
+                              &failed);
     ops->flags = fsi_grow(ops->flags, cap * sizeof *ops->flags, &failed);
     if (failed)
         return -1;
@@ -53,21 +51,19 @@ static int reserve_points(ulph_operators *ops, int n)
     return 0;
 }
 
-/* Room for n_pairs pairs; 0, or -1 when memory runs out. */
-static int reserve_pairs(ulph_operators *ops, int64_t n_pairs)
+void ulph_for_blocks(const ulph_operators *ops, void (*block)(void *context, int lo, int hi),
+                     void *context)
 {
-    if (ops->g && n_pairs <= ops->pair_capacity)
-        return 0;
-    const size_t cap = (size_t)n_pairs + (size_t)n_pairs / 4 + 64;
-    int failed = 0;
-    ops->pairs.neighbour = fsi_grow(ops->pairs.neighbour, cap * sizeof *ops->pairs.neighbour, &failed);
-    ops->pairs.w = fsi_grow(ops->pairs.w, cap * sizeof *ops->pairs.w, &failed);
-    ops->g = fsi_grow(ops->g, cap * FSI_DIM * sizeof *ops->g, &failed);
-    if (failed)
-        return -1;
-    ops->pair_capacity = (int64_t)cap;
-    return 0;
+    const fluid_rows *r = &ops->rows;
+    const int parallel = ops->n >= FLUID_PARALLEL_MIN_PARTICLES;
+    for (int parity = 0; parity < 2; parity++) {
+#pragma omp parallel for schedule(dynamic, 1) if (parallel)
+        for (int b = parity; b < r->n_blocks; b += 2)
+            block(context, r->block_start[b], r->block_start[b + 1]);
+    }
 }
+
+/* ---- the update ------------------------------------------------------------------ */
 
 /* Largest |M M^-1 - I| (Frobenius) of a usable inverse. fsi_mat_inverse measures
  * the condition as |M| |adj M| / |det M|; for a numerically rank-one 3 x 3 M
@@ -91,122 +87,104 @@ static int shape_inverse(const double *m, double *m_inv, double max_condition)
     return fsi_mat_norm(residual) <= MAX_INVERSE_RESIDUAL ? 0 : -1;
 }
 
-/* Pass 1: the length of particle i's row, its candidates within the support. */
-static int64_t row_length(const ulph_operators *ops, const gaussian_kernel *k,
-                          const fluid_verlet *list, const double *x, int i)
+typedef struct {
+    ulph_operators *ops;
+    const fluid_particles *p;
+} shape_context;
+
+/* One pair's share of M (000 Eq. 15) and the counts of particle i, wv = w V_J. */
+static inline void shape_add(ulph_operators *ops, int i, double wv, const double *rel, double r2)
 {
-    int64_t count = 0;
-    for (int64_t c = list->offset[i]; c < list->offset[i + 1]; c++) {
-        double rel[FSI_DIM], r2 = 0.0;
-        ulph_pair_vector(ops, x, i, list->candidate[c], rel);
-        for (int d = 0; d < FSI_DIM; d++)
-            r2 += rel[d] * rel[d];
-        count += r2 < k->support2;
-    }
-    return count;
+    fsi_mat_add_outer(&ops->shape[(size_t)i * FSI_MAT_SIZE], wv, rel, rel);
+    ops->neighbours[i]++;
+    ops->informative[i] += wv > 0.0 && r2 > 0.0;
 }
 
-/* Pass 2: fills particle i's row, M_I, M_I^-1 and g; returns 1 when the particle is
- * flagged ULPH_SINGULAR_SHAPE, else 0. */
-static int fill_row(ulph_operators *ops, const gaussian_kernel *k, const fluid_verlet *list,
-                    const fluid_particles *p, int i)
+static void shape_block(void *context, int lo, int hi)
 {
-    const double *restrict x = p->x;
-    const double *restrict volume = p->volume;
-    const int64_t first = ops->pairs.offset[i];
-    double m[FSI_MAT_SIZE];
-    fsi_mat_zero(m);
-    int informative = 0; /* neighbours that add to M: w V_J > 0 at a non-zero distance */
-
-    /* The neighbours within the support, compacted in the candidates' order, with x_IJ
-     * in g and r^2 in w for now; then the kernel values in a loop of their own (no
-     * call, no gather: the compiler can unroll and vectorise it), then M. */
-    int64_t e = first;
-    for (int64_t c = list->offset[i]; c < list->offset[i + 1]; c++) {
-        const int j = list->candidate[c];
-        double rel[FSI_DIM], r2 = 0.0;
-        ulph_pair_vector(ops, x, i, j, rel);
-        for (int d = 0; d < FSI_DIM; d++)
-            r2 += rel[d] * rel[d];
-        if (!(r2 < k->support2))
-            continue;
-        for (int d = 0; d < FSI_DIM; d++)
-            ops->g[e * FSI_DIM + d] = rel[d]; /* x_IJ for now, g_IJ below */
-        ops->pairs.neighbour[e] = j;
-        ops->pairs.w[e] = r2;
-        e++;
+    const shape_context *c = context;
+    ulph_operators *ops = c->ops;
+    const fluid_rows *r = &ops->rows;
+    const double *x = c->p->x, *volume = c->p->volume;
+    for (int i = lo; i < hi; i++) {
+        for (int64_t e = r->offset[i]; e < r->fluid_end[i]; e++) {
+            const int j = r->pair[e];
+            double rel[FSI_DIM];
+            const double r2 = ulph_pair_vector(ops, x, i, j, rel);
+            shape_add(ops, i, r->f[e] * volume[j], rel, r2);
+            shape_add(ops, j, r->f[e] * volume[i], rel, r2); /* x_JI (x) x_JI = x_IJ (x) x_IJ */
+        }
+        for (int64_t e = r->split[i]; e < r->boundary_end[i]; e++) {
+            const int j = r->pair[e];
+            double rel[FSI_DIM];
+            const double r2 = ulph_pair_vector(ops, x, i, j, rel);
+            shape_add(ops, i, r->f[e] * volume[j], rel, r2);
+        }
     }
-    const int64_t end = e; /* == offset[i + 1]: pass 1 saw the same neighbours */
-    gaussian_kernel_w2_row(k, ops->pairs.w + first, end - first);
-    for (int64_t q = first; q < end; q++) {
-        const double *rel = ops->g + q * FSI_DIM;
-        const double wv = ops->pairs.w[q] * volume[ops->pairs.neighbour[q]];
-        double r2 = 0.0;
-        for (int d = 0; d < FSI_DIM; d++)
-            r2 += rel[d] * rel[d];
-        fsi_mat_add_outer(m, wv, rel, rel);     /* 000 Eq. 15 */
-        informative += wv > 0.0 && r2 > 0.0;
-    }
+}
 
+/* M_I exactly symmetric, its inverse under the rule; returns 1 when i is flagged
+ * ULPH_SINGULAR_SHAPE. */
+static int shape_finish(ulph_operators *ops, const fluid_verlet *list, int i)
+{
+    double *m = &ops->shape[(size_t)i * FSI_MAT_SIZE];
+    double *m_inv = &ops->shape_inv[(size_t)i * FSI_MAT_SIZE];
     /* Exactly symmetric (w V x_a x_b and w V x_b x_a round differently); the adjugate
      * inverse of a symmetric matrix is then exactly symmetric too. */
-    for (int r = 0; r < FSI_DIM; r++)
-        for (int c = r + 1; c < FSI_DIM; c++)
-            FSI_MAT(m, r, c) = FSI_MAT(m, c, r) = 0.5 * (FSI_MAT(m, r, c) + FSI_MAT(m, c, r));
-    fsi_mat_copy(m, ops->shape + (int64_t)i * FSI_MAT_SIZE);
-    double *m_inv = ops->shape_inv + (int64_t)i * FSI_MAT_SIZE;
+    for (int a = 0; a < FSI_DIM; a++)
+        for (int b = a + 1; b < FSI_DIM; b++)
+            FSI_MAT(m, a, b) = FSI_MAT(m, b, a) = 0.5 * (FSI_MAT(m, a, b) + FSI_MAT(m, b, a));
     if (list->idle[i]) {
         fsi_mat_zero(m_inv);
         ops->flags[i] = ULPH_IDLE_WALL;
         return 0;
     }
-    if (informative < FSI_DIM + 1 || shape_inverse(m, m_inv, ops->max_condition) != 0) {
+    if (ops->informative[i] < FSI_DIM + 1 || shape_inverse(m, m_inv, ops->max_condition) != 0) {
         fsi_mat_zero(m_inv);
-        memset(ops->g + first * FSI_DIM, 0, sizeof(double) * (size_t)((end - first) * FSI_DIM));
         ops->flags[i] = ULPH_SINGULAR_SHAPE;
         return 1;
     }
     ops->flags[i] = 0;
-    for (int64_t q2 = first; q2 < end; q2++) {
-        double *g = ops->g + q2 * FSI_DIM;
-        double rel[FSI_DIM];
-        for (int d = 0; d < FSI_DIM; d++)
-            rel[d] = ops->pairs.w[q2] * volume[ops->pairs.neighbour[q2]] * g[d];
-        fsi_mat_vec(m_inv, rel, g); /* g_IJ = M_I^-1 (w V_J x_IJ) */
-    }
     return 0;
 }
 
 int ulph_operators_update_list(ulph_operators *ops, const gaussian_kernel *k,
-                               const fluid_verlet *list, const fluid_particles *p)
+                               const fluid_verlet *list, const fluid_particles *p,
+                               int list_rebuilt)
 {
     const int n = p->n;
-    ops->pairs.n = 0;
-    ops->pairs.n_pairs = 0;
+    fluid_rows *r = &ops->rows;
+    ops->n = 0;
+    ops->n_pairs = 0;
     ops->n_singular = 0;
-    ops->pairs.periodic = list->periodic;
-    if (list->n != n || n < 0 || reserve_points(ops, n) != 0) {
+    ops->periodic = list->periodic;
+    if (list->n != n || n < 0 || reserve_points(ops, n) != 0 ||
+        ((list_rebuilt || r->n != n) && fluid_rows_build(r, list, p, 1) != 0)) {
         ulph_operators_free(ops);
         return -1;
     }
+    ops->n = n;
     const int parallel = n >= FLUID_PARALLEL_MIN_PARTICLES;
-    int64_t *offset = ops->pairs.offset;
-    offset[0] = 0;
+    const fsi_periodic *per = fsi_periodic_any(&ops->periodic) ? &ops->periodic : NULL;
 #pragma omp parallel for schedule(dynamic, FLUID_CHUNK) if (parallel)
-    for (int i = 0; i < n; i++)
-        offset[i + 1] = row_length(ops, k, list, p->x, i);
-    for (int i = 0; i < n; i++)
-        offset[i + 1] += offset[i];
-    if (reserve_pairs(ops, offset[n]) != 0) {
-        ulph_operators_free(ops);
-        return -1;
+    for (int i = 0; i < n; i++) {
+        fluid_rows_filter_row(r, k->support2, per, p->x, i);
+        gaussian_kernel_w2_row(k, r->f + r->offset[i], r->fluid_end[i] - r->offset[i]);
+        gaussian_kernel_w2_row(k, r->f + r->split[i], r->boundary_end[i] - r->split[i]);
+        fsi_mat_zero(&ops->shape[(size_t)i * FSI_MAT_SIZE]);
+        ops->neighbours[i] = ops->informative[i] = 0;
     }
+    shape_context c = {ops, p};
+    ulph_for_blocks(ops, shape_block, &c);
     int n_singular = 0;
-#pragma omp parallel for schedule(dynamic, FLUID_CHUNK) if (parallel) reduction(+ : n_singular)
-    for (int i = 0; i < n; i++)
-        n_singular += fill_row(ops, k, list, p, i);
-    ops->pairs.n = n;
-    ops->pairs.n_pairs = offset[n];
+    int64_t n_pairs = 0;
+#pragma omp parallel for schedule(dynamic, FLUID_CHUNK) if (parallel) \
+    reduction(+ : n_singular, n_pairs)
+    for (int i = 0; i < n; i++) {
+        n_singular += shape_finish(ops, list, i);
+        n_pairs += ops->neighbours[i];
+    }
+    ops->n_pairs = n_pairs;
     ops->n_singular = n_singular;
     return 0;
 }
@@ -218,68 +196,120 @@ int ulph_operators_update(ulph_operators *ops, const gaussian_kernel *k,
     fluid_verlet_init(&list);
     int rc = fluid_verlet_build(&list, grid, p, k->support, 0);
     if (rc == 0)
-        rc = ulph_operators_update_list(ops, k, &list, p);
+        rc = ulph_operators_update_list(ops, k, &list, p, 1);
     else
         ulph_operators_free(ops);
     fluid_verlet_free(&list);
     return rc;
 }
 
-void ulph_gradient_scalar(const ulph_operators *ops, const double *f, double *grad)
+/* ---- the operators --------------------------------------------------------------- */
+
+/* The sums of the operators without M^-1, per pair (fluid pairs to both particles):
+ * raw[i] of grad f, B_I of L, or (div) directly with M^-1 applied per side. */
+typedef struct {
+    const ulph_operators *ops;
+    const fluid_particles *p;
+    const double *field;        /* f[n] or u[n * FSI_DIM] */
+    double *out;
+    int kind;                   /* 0: grad f, 1: B = sum w V A(u) (x) x, 2: div u */
+} operator_context;
+
+enum { OP_GRADIENT, OP_VECTOR_GRADIENT, OP_DIVERGENCE };
+
+/* One side's share: I at rel (x_IJ as I sees it) with wv = w V_J and A(f) = f_J - f_I. */
+static inline void operator_add(const operator_context *c, int i, double wv, const double *rel,
+                                const double *delta)
 {
-    const int n = ops->pairs.n;
-#pragma omp parallel for schedule(dynamic, FLUID_CHUNK) if (n >= FLUID_PARALLEL_MIN_PARTICLES)
-    for (int i = 0; i < n; i++) {
-        double s[FSI_DIM] = {0};
-        if (!(ops->flags[i] & ULPH_SINGULAR_SHAPE)) {
-            const double fi = f[i];
-            for (int64_t q = ops->pairs.offset[i]; q < ops->pairs.offset[i + 1]; q++) {
-                const double df = f[ops->pairs.neighbour[q]] - fi;
-                const double *g = ops->g + q * FSI_DIM;
-                for (int d = 0; d < FSI_DIM; d++)
-                    s[d] += df * g[d];
-            }
-        }
-        for (int d = 0; d < FSI_DIM; d++)
-            grad[(int64_t)i * FSI_DIM + d] = s[d];
+    switch (c->kind) {
+    case OP_GRADIENT:
+        for (int a = 0; a < FSI_DIM; a++)
+            c->out[(size_t)i * FSI_DIM + a] += wv * delta[0] * rel[a];
+        break;
+    case OP_VECTOR_GRADIENT:
+        fsi_mat_add_outer(&c->out[(size_t)i * FSI_MAT_SIZE], wv, delta, rel);
+        break;
+    default: {
+        double y[FSI_DIM], s = 0.0;
+        fsi_mat_vec(&c->ops->shape_inv[(size_t)i * FSI_MAT_SIZE], rel, y);
+        for (int a = 0; a < FSI_DIM; a++)
+            s += delta[a] * y[a];
+        c->out[i] += wv * s;
+    }
     }
 }
 
-void ulph_gradient_vector(const ulph_operators *ops, const double *u, double *grad)
+/* The pair of entry e of I's row; both: a fluid pair, added to J too (x_JI = -x_IJ and
+ * A_J(f) = -A_I(f): their product is the same). */
+static inline void operator_pair(const operator_context *c, int i, int64_t e, int both)
 {
-    const int n = ops->pairs.n;
-#pragma omp parallel for schedule(dynamic, FLUID_CHUNK) if (n >= FLUID_PARALLEL_MIN_PARTICLES)
-    for (int i = 0; i < n; i++) {
-        double s[FSI_MAT_SIZE] = {0};
-        if (!(ops->flags[i] & ULPH_SINGULAR_SHAPE)) {
-            const double *ui = u + (int64_t)i * FSI_DIM;
-            for (int64_t q = ops->pairs.offset[i]; q < ops->pairs.offset[i + 1]; q++) {
-                const double *uj = u + (int64_t)ops->pairs.neighbour[q] * FSI_DIM;
-                double du[FSI_DIM];
-                for (int a = 0; a < FSI_DIM; a++)
-                    du[a] = uj[a] - ui[a];
-                fsi_mat_add_outer(s, 1.0, du, ops->g + q * FSI_DIM);
-            }
-        }
-        fsi_mat_copy(s, grad + (int64_t)i * FSI_MAT_SIZE);
+    const fluid_rows *r = &c->ops->rows;
+    const double *field = c->field, *volume = c->p->volume;
+    const int width = c->kind == OP_GRADIENT ? 1 : FSI_DIM;
+    const int j = r->pair[e];
+    double rel[FSI_DIM], delta[FSI_DIM];
+    ulph_pair_vector(c->ops, c->p->x, i, j, rel);
+    for (int a = 0; a < width; a++)
+        delta[a] = field[(size_t)j * width + a] - field[(size_t)i * width + a];
+    operator_add(c, i, r->f[e] * volume[j], rel, delta);
+    if (both)
+        operator_add(c, j, r->f[e] * volume[i], rel, delta);
+}
+
+static void operator_block(void *context, int lo, int hi)
+{
+    const operator_context *c = context;
+    const fluid_rows *r = &c->ops->rows;
+    for (int i = lo; i < hi; i++) {
+        for (int64_t e = r->offset[i]; e < r->fluid_end[i]; e++)
+            operator_pair(c, i, e, 1);
+        for (int64_t e = r->split[i]; e < r->boundary_end[i]; e++)
+            operator_pair(c, i, e, 0);
     }
 }
 
-void ulph_divergence(const ulph_operators *ops, const double *u, double *div)
+/* The operator's sums into out (zeroed first), then M^-1 applied per particle. */
+static void apply(const ulph_operators *ops, const fluid_particles *p, const double *field,
+                  double *out, int kind)
 {
-    const int n = ops->pairs.n;
-#pragma omp parallel for schedule(dynamic, FLUID_CHUNK) if (n >= FLUID_PARALLEL_MIN_PARTICLES)
+    const int n = ops->n;
+    const size_t width = kind == OP_GRADIENT ? FSI_DIM : kind == OP_VECTOR_GRADIENT
+                                                             ? FSI_MAT_SIZE : 1;
+    memset(out, 0, (size_t)n * width * sizeof *out);
+    operator_context c = {ops, p, field, out, kind};
+    ulph_for_blocks(ops, operator_block, &c);
+    if (kind == OP_DIVERGENCE)
+        return;
+#pragma omp parallel for schedule(static) if (n >= FLUID_PARALLEL_MIN_PARTICLES)
     for (int i = 0; i < n; i++) {
-        double s = 0.0;
-        if (!(ops->flags[i] & ULPH_SINGULAR_SHAPE)) {
-            const double *ui = u + (int64_t)i * FSI_DIM;
-            for (int64_t q = ops->pairs.offset[i]; q < ops->pairs.offset[i + 1]; q++) {
-                const double *uj = u + (int64_t)ops->pairs.neighbour[q] * FSI_DIM;
-                const double *g = ops->g + q * FSI_DIM;
-                for (int a = 0; a < FSI_DIM; a++)
-                    s += (uj[a] - ui[a]) * g[a];
-            }
+        const double *m_inv = &ops->shape_inv[(size_t)i * FSI_MAT_SIZE];
+        double *o = &out[(size_t)i * width];
+        if (kind == OP_GRADIENT) {
+            double raw[FSI_DIM];
+            memcpy(raw, o, sizeof raw);
+            fsi_mat_vec(m_inv, raw, o);
+        } else {
+            double b[FSI_MAT_SIZE];
+            memcpy(b, o, sizeof b);
+            fsi_mat_mul(b, m_inv, o); /* L = B M^-1 (M^-1 symmetric) */
         }
-        div[i] = s;
     }
+}
+
+void ulph_gradient_scalar(const ulph_operators *ops, const fluid_particles *p, const double *f,
+                          double *grad)
+{
+    apply(ops, p, f, grad, OP_GRADIENT);
+}
+
+void ulph_gradient_vector(const ulph_operators *ops, const fluid_particles *p, const double *u,
+                          double *grad)
+{
+    apply(ops, p, u, grad, OP_VECTOR_GRADIENT);
+}
+
+void ulph_divergence(const ulph_operators *ops, const fluid_particles *p, const double *u,
+                     double *div)
+{
+    apply(ops, p, u, div, OP_DIVERGENCE);
 }

@@ -20,19 +20,23 @@
  * irregular cloud. The same holds for L and div u of u = c + A x. That is what M^-1
  * is for (SPH's plain kernel gradient has no such property where the support is cut).
  *
- * The neighbour list. ulph_operators_update builds, from the shared neighbour grid
- * (core/neighbour_grid.h) of the current positions, a compressed row (CSR) list of
- * every pair closer than the support, |x_IJ| < delta (coincident particles included:
- * they add nothing), stored as I -> J in I's row and J -> I in J's row, in the grid's
- * deterministic order. Per pair it keeps J, w(x_IJ) and the vector g_IJ = w V_J M_I^-1 x_IJ, so
- * each operator is one gather, sum_J A(f) g_IJ. Both passes of the build and every
- * operator are parallel over particles (OpenMP, dynamic chunks) and each particle
- * writes only its own row and outputs, in a fixed order: the results are the same
- * bit for bit with any number of threads. Nothing is allocated unless the particle
- * or pair count grows beyond an earlier update's.
+ * The neighbours. ulph_operators_update_list keeps, from candidate lists
+ * (verlet_list.h), the pairs within the support, |x_IJ| < delta (coincident particles
+ * included: they add nothing), in the pair-once rows of fluid_rows.h: each pair of
+ * fluid particles once, in the row of the lower index, each fluid-boundary pair in the
+ * fluid particle's row, and each wall or solid particle's full row; per pair it keeps
+ * w(x_IJ) (w_IJ = w_JI: one kernel value per pair). Every sum above is linear in what
+ * it sums, so it is taken without M_I^-1 and multiplied by it once per particle
+ * (grad f_I = M_I^-1 sum_J w V_J A(f) x_IJ; L_I = B_I M_I^-1 with
+ * B_I = sum_J w V_J A(u) (x) x_IJ), and a pair of fluid particles adds to both:
+ * A(f) x_IJ is the same seen from either side (both change sign). The pair passes run
+ * in the rows' even and odd blocks in parallel (OpenMP) and add every particle's terms
+ * in an order fixed by the particles alone: the results are the same bit for bit with
+ * any number of threads. Nothing is allocated unless the particle or pair count grows
+ * beyond an earlier update's.
  *
  * Singular shape tensors: THE RULE. A particle I whose family cannot determine a
- * gradient has its M_I^-1 and every g_IJ set to zero and the flag
+ * gradient has its M_I^-1 set to zero and the flag
  * ULPH_SINGULAR_SHAPE: all its gradients, velocity gradient and divergence are zero.
  * That is the case when
  *   - it has fewer than FSI_DIM + 1 neighbours at a non-zero distance within the
@@ -62,6 +66,7 @@
 #include "gaussian_kernel.h"
 #include "verlet_list.h"
 #include "fluid_pairs.h"
+#include "fluid_rows.h"
 #include "fluid_parallel.h"
 
 /* Default bound on the Frobenius condition number |M| |M^-1| of a usable shape
@@ -86,22 +91,26 @@ enum {
 
 /* Read-only for callers (except max_condition, which may be set before an update). */
 typedef struct {
-    fluid_pairs pairs;      /* the neighbours within the support, w = w(|x_IJ|) (000 Eq. 17) */
-    double *g;              /* w V_J M_I^-1 x_IJ, FSI_DIM each [1/m]; zero for a flagged I */
+    fluid_rows rows;        /* the pairs within the support, f = w(|x_IJ|) (000 Eq. 17) */
+    fsi_periodic periodic;  /* the periodic axes of the candidates (pair vectors) */
+    int n;                  /* particles of the last update */
+    int64_t n_pairs;        /* directed pairs within the support (each pair twice) */
+    int32_t *neighbours;    /* per particle: its neighbours within the support */
     double *shape;          /* M_I (000 Eq. 15), FSI_MAT_SIZE each, row-major [m^2] */
     double *shape_inv;      /* M_I^-1, FSI_MAT_SIZE each [1/m^2]; zero for a flagged I */
-    uint8_t *flags;         /* ULPH_SINGULAR_SHAPE */
+    uint8_t *flags;         /* ULPH_SINGULAR_SHAPE, ULPH_IDLE_WALL */
+    int32_t *informative;   /* scratch: neighbours with w V_J > 0 at a non-zero distance */
     int n_singular;         /* flagged particles at the last update */
     double max_condition;   /* bound of the rule above */
-    int point_capacity;     /* allocated sizes */
-    int64_t pair_capacity;
+    int point_capacity;     /* allocated size */
 } ulph_operators;
 
-/* x_IJ = x_J - x_I of the operators' pairs (fluid_pair_vector). */
-static inline void ulph_pair_vector(const ulph_operators *ops, const double *x, int i, int j,
-                                    double *rel)
+/* x_IJ = x_J - x_I (nearest periodic image) and |x_IJ|^2. */
+static inline double ulph_pair_vector(const ulph_operators *ops, const double *x, int i, int j,
+                                      double *rel)
 {
-    fluid_pair_vector(&ops->pairs, x, i, j, rel);
+    return fluid_pair_vector_r2(fsi_periodic_any(&ops->periodic) ? &ops->periodic : NULL, x,
+                                i, j, rel);
 }
 
 /* Empty operators (no allocation), max_condition = ULPH_MAX_CONDITION_M. */
@@ -110,7 +119,7 @@ void ulph_operators_init(ulph_operators *ops);
 /* Frees the arrays and leaves ops empty (init state, max_condition kept). */
 void ulph_operators_free(ulph_operators *ops);
 
-/* Neighbour list, M, M^-1 and g of every particle of p in its current positions p->x
+/* Neighbour rows, M and M^-1 of every particle of p in its current positions p->x
  * with volumes p->volume. grid must have been built from p->x (any cell size; the
  * support k->support is the natural one). Returns 0, or -1 when the grid does not
  * hold p->n points or memory runs out (ops is then empty). */
@@ -118,22 +127,33 @@ int ulph_operators_update(ulph_operators *ops, const gaussian_kernel *k,
                           const fsi_neighbour_grid *grid, const fluid_particles *p);
 
 /* The same from candidate lists built (or kept, fluid_verlet_update) for p, with every
- * pair now within the support among them: rows hold the candidates within the support
- * in the candidates' order; an idle wall's row is empty and flagged ULPH_IDLE_WALL
- * (not counted in n_singular). ulph_operators_update is this with candidates from the
- * grid at the support itself and no idle walls. */
+ * pair now within the support among them; list_rebuilt: the lists were built since the
+ * last update (the rows are then derived again). An idle wall's row is empty and
+ * flagged ULPH_IDLE_WALL (not counted in n_singular). ulph_operators_update is this
+ * with candidates from the grid at the support itself and no idle walls. */
 int ulph_operators_update_list(ulph_operators *ops, const gaussian_kernel *k,
-                               const fluid_verlet *list, const fluid_particles *p);
+                               const fluid_verlet *list, const fluid_particles *p,
+                               int list_rebuilt);
 
-/* grad f (000 Eq. 13) of the scalar field f[n]: grad[i * FSI_DIM + a] = df/dx_a. */
-void ulph_gradient_scalar(const ulph_operators *ops, const double *f, double *grad);
+/* Runs block(context, lo, hi) over the particles of the rows' blocks, the even blocks
+ * in parallel, then the odd ones (fluid_rows.h): for a pair pass that writes to both
+ * particles of a fluid pair. */
+void ulph_for_blocks(const ulph_operators *ops, void (*block)(void *context, int lo, int hi),
+                     void *context);
+
+/* grad f (000 Eq. 13) of the scalar field f[n] over p's pairs: grad[i * FSI_DIM + a] =
+ * df/dx_a. */
+void ulph_gradient_scalar(const ulph_operators *ops, const fluid_particles *p, const double *f,
+                          double *grad);
 
 /* L = grad u (000 Eq. 13) of the vector field u[n * FSI_DIM]:
  * L[i * FSI_MAT_SIZE + a * FSI_DIM + b] = du_a/dx_b. */
-void ulph_gradient_vector(const ulph_operators *ops, const double *u, double *grad);
+void ulph_gradient_vector(const ulph_operators *ops, const fluid_particles *p, const double *u,
+                          double *grad);
 
-/* div u (000 Eq. 12) of the vector field u[n * FSI_DIM]: div[i]. The trace of
- * ulph_gradient_vector, to round-off (the sums run in another order). */
-void ulph_divergence(const ulph_operators *ops, const double *u, double *div);
+/* div u (000 Eq. 12) of the vector field u[n * FSI_DIM]: div[i], the trace of
+ * ulph_gradient_vector's L. */
+void ulph_divergence(const ulph_operators *ops, const fluid_particles *p, const double *u,
+                     double *div);
 
 #endif

@@ -25,6 +25,7 @@
 #include "ulph_operators.h"
 #include "ghost_walls.h"
 #include "wc_predictor_corrector.h"
+#include "wc_verlet.h"
 
 /* The phases of one evaluation, timed separately (fluid_scheme_use_timers). */
 enum { PHASE_SEARCH, PHASE_OPERATORS, PHASE_STATE, PHASE_WALLS, PHASE_FILTER, PHASE_MOMENTUM,
@@ -42,13 +43,15 @@ struct fluid_scheme {
     ulph_operators ops;
     ulph_momentum_scratch scratch;
     const unsigned char *free_slip;
-    double *velocity_for_viscosity, *filtered, *density_gradient;
+    double *velocity_for_viscosity, *filtered, *filter_volume, *density_gradient;
     fluid_step_limits step;     /* h, c0, rho0, mu and the CFL factors */
     long filter_interval;
     int filter_due;
     int tension;
     int capacity; /* particles the scratch arrays hold */
     fluid_wc_integrator integrator; /* 000 Eq. 56 */
+    int verlet;                 /* 1: the Verlet integrator instead */
+    fluid_wc_verlet verlet_integrator;
     fsi_timers *timers;         /* NULL: not timed */
     int phase[N_PHASES];        /* their indices in timers */
 };
@@ -63,6 +66,7 @@ void fluid_scheme_use_timers(fluid_scheme *s, fsi_timers *t)
 void fluid_scheme_particles_reordered(fluid_scheme *s)
 {
     fluid_verlet_invalidate(&s->list);
+    fluid_wc_verlet_restart(&s->verlet_integrator);
 }
 
 static void phase_start(fluid_scheme *s, int phase)
@@ -88,6 +92,7 @@ static int reserve(fluid_scheme *s, int n)
     s->velocity_for_viscosity = fsi_grow(s->velocity_for_viscosity,
                                          cap * FSI_DIM * sizeof *s->velocity_for_viscosity, &failed);
     s->filtered = fsi_grow(s->filtered, cap * sizeof *s->filtered, &failed);
+    s->filter_volume = fsi_grow(s->filter_volume, cap * sizeof *s->filter_volume, &failed);
     s->density_gradient = fsi_grow(s->density_gradient,
                                    cap * FSI_DIM * sizeof *s->density_gradient, &failed);
     if (failed || ulph_momentum_reserve(&s->scratch, (int)cap) != 0)
@@ -134,6 +139,9 @@ fluid_scheme *fluid_scheme_create(const fsi_case *c, const char *role,
     s->step.viscosity = props->viscosity;
     s->filter_interval = fsi_case_get_int(c, own, "density_filter_interval", 20);
     s->tension = fsi_case_get_bool(c, own, "tension", 0);
+    const char *integrator = fsi_case_get(c, own, "integrator");
+    s->verlet = integrator && strcmp(integrator, "verlet") == 0;
+    fluid_wc_verlet_init(&s->verlet_integrator, FLUID_VERLET_EULER_INTERVAL);
     s->skin = fsi_case_get_real(c, own, "neighbour_skin", FLUID_VERLET_SKIN) * s->kernel.support;
     fluid_verlet_init(&s->list);
     fsi_grid_set_periodic(&s->list.grid, &props->periodic);
@@ -154,8 +162,10 @@ void fluid_scheme_free(fluid_scheme *s)
     ulph_operators_free(&s->ops);
     ulph_momentum_free(&s->scratch);
     fluid_wc_integrator_free(&s->integrator);
+    fluid_wc_verlet_free(&s->verlet_integrator);
     free(s->velocity_for_viscosity);
     free(s->filtered);
+    free(s->filter_volume);
     free(s->density_gradient);
     free(s);
 }
@@ -192,34 +202,80 @@ double fluid_scheme_support(const fluid_scheme *s)
  * and every filter kicks the surface. The corrected average returns any linear density
  * field unchanged (inside, at the surface, at walls) and still removes the
  * lattice-scale noise Eq. 24 is for. */
+typedef struct {
+    const ulph_operators *ops;
+    const fluid_particles *p;
+    const double *grad;         /* grad rho */
+    double *wm, *wv;            /* the sums of the filter */
+} filter_context;
+
+/* One side's share: I with neighbour J at x_IJ = rel, kernel w. */
+static inline void filter_add(const filter_context *c, int i, int j, double w, const double *rel)
+{
+    const fluid_particles *p = c->p;
+    double shift = 0.0;
+    for (int d = 0; d < FSI_DIM; d++)
+        shift += c->grad[i * FSI_DIM + d] * rel[d];
+    c->wm[i] += w * (p->mass[j] - p->volume[j] * shift);
+    c->wv[i] += w * p->volume[j];
+}
+
+static void filter_block(void *context, int lo, int hi)
+{
+    const filter_context *c = context;
+    const fluid_rows *r = &c->ops->rows;
+    const fluid_particles *p = c->p;
+    for (int i = lo; i < hi; i++) {
+        if (!(p->flags[i] & FLUID_PARTICLE_FLUID))
+            continue;
+        for (int64_t e = r->offset[i]; e < r->fluid_end[i]; e++) {
+            const int j = r->pair[e];
+            double rel[FSI_DIM], back[FSI_DIM];
+            ulph_pair_vector(c->ops, p->x, i, j, rel);
+            for (int d = 0; d < FSI_DIM; d++)
+                back[d] = -rel[d];
+            filter_add(c, i, j, r->f[e], rel);
+            filter_add(c, j, i, r->f[e], back);
+        }
+        for (int64_t e = r->split[i]; e < r->boundary_end[i]; e++) {
+            const int j = r->pair[e];
+            if (!(p->flags[j] & FLUID_PARTICLE_WALL)) /* not the solid's particles */
+                continue;
+            double rel[FSI_DIM];
+            ulph_pair_vector(c->ops, p->x, i, j, rel);
+            filter_add(c, i, j, r->f[e], rel);
+        }
+    }
+}
+
+/* 000 Eq. 24, rho_I = sum_J w_IJ m_J / sum_J w_IJ V_J over I and its neighbours (walls
+ * included, with the mass of 000 Eq. 54), with a first-order correction:
+ *
+ *     rho_I = sum_J w_IJ V_J (rho_J - grad rho_I . x_IJ) / sum_J w_IJ V_J
+ *
+ * (grad rho_I from 000 Eq. 13). Without the correction the Shepard average of a
+ * particle whose family is cut by the free surface is taken over deeper, denser
+ * particles: in a hydrostatic column (drho/dy = -rho0 g / c0^2) it raises the top row's
+ * density by about a spacing's worth, p by ~ rho0 g dx, twice the row's own pressure,
+ * and every filter kicks the surface. The corrected average returns any linear density
+ * field unchanged (inside, at the surface, at walls) and still removes the
+ * lattice-scale noise Eq. 24 is for. */
 static void density_filter(fluid_scheme *s, fluid_particles *p)
 {
     const int n = p->n;
-    const ulph_operators *ops = &s->ops;
     const double w0 = gaussian_kernel_w2(&s->kernel, 0.0);
-    ulph_gradient_scalar(ops, p->density, s->density_gradient);
-#pragma omp parallel for schedule(dynamic, FLUID_CHUNK) if (n >= FLUID_PARALLEL_MIN_PARTICLES)
+    ulph_gradient_scalar(&s->ops, p, p->density, s->density_gradient);
+#pragma omp parallel for schedule(static) if (n >= FLUID_PARALLEL_MIN_PARTICLES)
     for (int i = 0; i < n; i++) {
-        s->filtered[i] = p->density[i];
-        if (!(p->flags[i] & FLUID_PARTICLE_FLUID))
-            continue;
-        const double *grad = &s->density_gradient[i * FSI_DIM];
-        double wm = w0 * p->mass[i], wv = w0 * p->volume[i];
-        for (int64_t k = ops->pairs.offset[i]; k < ops->pairs.offset[i + 1]; k++) {
-            const int j = ops->pairs.neighbour[k];
-            if (!(p->flags[j] & (FLUID_PARTICLE_FLUID | FLUID_PARTICLE_WALL)))
-                continue;
-            double shift = 0.0, xij[FSI_DIM];
-            ulph_pair_vector(ops, p->x, i, j, xij);
-            for (int d = 0; d < FSI_DIM; d++)
-                shift += grad[d] * xij[d];
-            wm += ops->pairs.w[k] * (p->mass[j] - p->volume[j] * shift);
-            wv += ops->pairs.w[k] * p->volume[j];
-        }
-        s->filtered[i] = wm / wv;
+        s->filtered[i] = w0 * p->mass[i];
+        s->filter_volume[i] = w0 * p->volume[i];
     }
+    filter_context c = {&s->ops, p, s->density_gradient, s->filtered, s->filter_volume};
+    ulph_for_blocks(&s->ops, filter_block, &c);
+#pragma omp parallel for schedule(static) if (n >= FLUID_PARALLEL_MIN_PARTICLES)
     for (int i = 0; i < n; i++)
-        p->density[i] = s->filtered[i];
+        if (p->flags[i] & FLUID_PARTICLE_FLUID)
+            p->density[i] = s->filtered[i] / s->filter_volume[i];
 }
 
 int fluid_scheme_rates(fluid_scheme *s, fluid_particles *p, double *drho_dt, double *dv_dt,
@@ -233,10 +289,11 @@ int fluid_scheme_rates(fluid_scheme *s, fluid_particles *p, double *drho_dt, dou
     tait_eos_update_fluid(&s->eos, p, s->tension);
     phase_stop(s, PHASE_STATE);
     phase_start(s, PHASE_SEARCH);
-    int rc = fluid_verlet_update(&s->list, p, s->kernel.support, s->skin) < 0 ? -1 : 0;
+    const int built = fluid_verlet_update(&s->list, p, s->kernel.support, s->skin);
     phase_stop(s, PHASE_SEARCH);
     phase_start(s, PHASE_OPERATORS);
-    rc = rc != 0 ? rc : ulph_operators_update_list(&s->ops, &s->kernel, &s->list, p);
+    const int rc = built < 0 ? -1
+                             : ulph_operators_update_list(&s->ops, &s->kernel, &s->list, p, built);
     phase_stop(s, PHASE_OPERATORS);
     if (rc != 0) {
         snprintf(msg, msg_size, "cannot build the neighbour lists of %d particles (a "
@@ -244,16 +301,19 @@ int fluid_scheme_rates(fluid_scheme *s, fluid_particles *p, double *drho_dt, dou
         return -1;
     }
     phase_start(s, PHASE_WALLS);
-    ghost_walls_update(&s->ops.pairs, &s->eos, s->momentum.gravity, s->free_slip, p,
-                      s->velocity_for_viscosity);
+    ghost_walls_update(&s->ops.rows, &s->ops.periodic, &s->eos, s->momentum.gravity,
+                       s->free_slip, p, s->velocity_for_viscosity);
     phase_stop(s, PHASE_WALLS);
     if (s->filter_due) {
         phase_start(s, PHASE_FILTER);
         density_filter(s, p);
         tait_eos_update_fluid(&s->eos, p, s->tension);
-        ghost_walls_update(&s->ops.pairs, &s->eos, s->momentum.gravity,
-                          s->free_slip, p, s->velocity_for_viscosity);
+        ghost_walls_update(&s->ops.rows, &s->ops.periodic, &s->eos, s->momentum.gravity,
+                           s->free_slip, p, s->velocity_for_viscosity);
         s->filter_due = 0;
+        /* The filtered rho^n replaces the step's start; Verlet's leapfrog from rho^{n-1}
+         * would bring back the noise it removed, so the next step is the Euler one. */
+        fluid_wc_verlet_restart(&s->verlet_integrator);
         phase_stop(s, PHASE_FILTER);
     }
     phase_start(s, PHASE_MOMENTUM);
@@ -266,6 +326,8 @@ int fluid_scheme_rates(fluid_scheme *s, fluid_particles *p, double *drho_dt, dou
 int fluid_scheme_step(fluid_scheme *s, fluid_particles *p, double t, double dt,
                       const fluid_step_hooks *hooks, char *msg, size_t msg_size)
 {
+    if (s->verlet)
+        return fluid_wc_verlet_step(&s->verlet_integrator, p, t, dt, hooks, msg, msg_size);
     return fluid_wc_step(&s->integrator, p, t, dt, hooks, msg, msg_size);
 }
 
@@ -286,7 +348,7 @@ double fluid_scheme_stable_dt(const fluid_scheme *s, const fluid_particles *p, d
 void fluid_scheme_pressure_gradient(const fluid_scheme *s, const fluid_particles *p,
                                     double *grad)
 {
-    ulph_gradient_scalar(&s->ops, p->pressure, grad);
+    ulph_gradient_scalar(&s->ops, p, p->pressure, grad);
 }
 
 void fluid_scheme_boundary_loads(const fluid_scheme *s, const fluid_particles *p,
@@ -298,7 +360,7 @@ void fluid_scheme_boundary_loads(const fluid_scheme *s, const fluid_particles *p
 
 int fluid_scheme_write_fields(const fluid_scheme *s, fsi_h5_writer *out)
 {
-    const int n = s->ops.pairs.n;
+    const int n = s->ops.n;
     int32_t *flags = malloc((size_t)(n > 0 ? n : 1) * sizeof *flags);
     if (!flags)
         return -1;
@@ -311,5 +373,5 @@ int fluid_scheme_write_fields(const fluid_scheme *s, fsi_h5_writer *out)
 
 long long fluid_scheme_pair_count(const fluid_scheme *s)
 {
-    return (long long)s->ops.pairs.n_pairs;
+    return (long long)s->ops.n_pairs;
 }

@@ -51,11 +51,12 @@ void ghost_wall_set(const ghost_wall_sums *g, int s, const tait_eos *eos,
     }
 }
 
-void ghost_walls_update(const fluid_pairs *pairs, const tait_eos *eos, const double *gravity,
-                       const unsigned char *free_slip, fluid_particles *p,
-                       double *velocity_for_viscosity)
+void ghost_walls_update(const fluid_rows *rows, const fsi_periodic *per, const tait_eos *eos,
+                        const double *gravity, const unsigned char *free_slip, fluid_particles *p,
+                        double *velocity_for_viscosity)
 {
     const int n = p->n;
+    const fsi_periodic *axes = per && fsi_periodic_any(per) ? per : NULL;
 #pragma omp parallel for schedule(dynamic, FLUID_CHUNK) if (n >= FLUID_PARALLEL_MIN_PARTICLES)
     for (int s = 0; s < n; s++) {
         if (!(p->flags[s] & (FLUID_PARTICLE_WALL | FLUID_PARTICLE_MOVING_BOUNDARY))) {
@@ -64,13 +65,13 @@ void ghost_walls_update(const fluid_pairs *pairs, const tait_eos *eos, const dou
             continue;
         }
         ghost_wall_sums g = {0};
-        for (int64_t k = pairs->offset[s]; k < pairs->offset[s + 1]; k++) {
-            const int f = pairs->neighbour[k];
+        for (int64_t k = rows->split[s]; k < rows->boundary_end[s]; k++) {
+            const int f = rows->pair[k];
             if (!(p->flags[f] & FLUID_PARTICLE_FLUID))
                 continue;
             double xsf[FSI_DIM]; /* x_f - x_S */
-            fluid_pair_vector(pairs, p->x, s, f, xsf);
-            ghost_wall_sums_add(&g, p, f, pairs->w[k], xsf);
+            fluid_pair_vector_r2(axes, p->x, s, f, xsf);
+            ghost_wall_sums_add(&g, p, f, rows->f[k], xsf);
         }
         ghost_wall_set(&g, s, eos, gravity, free_slip, p, velocity_for_viscosity);
     }

@@ -8,10 +8,11 @@
 
 #include "fluid_particles.h"
 #include "tait_eos.h"
-#include "fluid_pairs.h"
+#include "fluid_rows.h"
 
-/* For every wall or moving boundary particle S with fluid neighbours f (kernel weights
- * w_Sf of the pairs of the current evaluation):
+/* For every wall or moving boundary particle S with fluid neighbours f in its row of
+ * rows (fluid_rows.h, with boundary rows, filtered, f = the kernel weight w_Sf of the
+ * current evaluation; per: the periodic axes or NULL):
  *   p_S = max(0, (sum_f p_f w_Sf + (g - a_S) . sum_f rho_f (x_S - x_f) w_Sf) / sum_f w_Sf)
  *                                                          (000 Eq. 52)
  * with a_S = p->boundary_acceleration of S: a moving wall's prescribed acceleration
@@ -32,13 +33,13 @@
  * sank through the floor). A wall particle without fluid neighbours gets p = 0,
  * rho = rho0 and v~ = v_S (its velocity_for_viscosity is then its own velocity). For
  * fluid particles velocity_for_viscosity is their velocity. */
-void ghost_walls_update(const fluid_pairs *pairs, const tait_eos *eos, const double *gravity,
-                       const unsigned char *free_slip, fluid_particles *p,
-                       double *velocity_for_viscosity);
+void ghost_walls_update(const fluid_rows *rows, const fsi_periodic *per, const tait_eos *eos,
+                        const double *gravity, const unsigned char *free_slip, fluid_particles *p,
+                        double *velocity_for_viscosity);
 
 /* The same for a scheme that walks its own rows: the sums of one wall particle S over
  * its fluid neighbours f, then its state from them (ghost_walls_update is these two
- * over the pair list). */
+ * over the rows). */
 typedef struct {
     double sum_w, sum_pw, head[FSI_DIM], v_mean[FSI_DIM], toward[FSI_DIM];
 } ghost_wall_sums;

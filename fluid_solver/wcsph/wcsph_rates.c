@@ -1,5 +1,5 @@
 /* Walls, gradients, continuity, momentum, contact and boundary loads of WCSPH
- * (wcsph_rates.h), over the rows of wcsph_rows.h. */
+ * (wcsph_rates.h), over the rows of fluid_rows.h. */
 #include "wcsph_rates.h"
 
 #include <math.h>
@@ -48,6 +48,20 @@ void wcsph_scratch_free(wcsph_scratch *s)
 static const fsi_periodic *periodic_of(const wcsph_neighbours *nb)
 {
     return fsi_periodic_any(&nb->list->periodic) ? &nb->list->periodic : NULL;
+}
+
+/* ---- the pairs ------------------------------------------------------------------- */
+
+void wcsph_pairs(fluid_rows *rows, const wendland_c2_kernel *k, const fsi_periodic *per,
+                 const fluid_particles *p)
+{
+    const int n = rows->n;
+#pragma omp parallel for schedule(dynamic, FLUID_CHUNK) if (n >= FLUID_PARALLEL_MIN_PARTICLES)
+    for (int i = 0; i < n; i++) {
+        fluid_rows_filter_row(rows, k->support2, per, p->x, i);
+        wendland_c2_f_row(k, rows->f + rows->offset[i], rows->fluid_end[i] - rows->offset[i]);
+        wendland_c2_f_row(k, rows->f + rows->split[i], rows->boundary_end[i] - rows->split[i]);
+    }
 }
 
 /* ---- pass 1: walls ------------------------------------------------------------- */
@@ -125,7 +139,7 @@ static ALWAYS_INLINE void gradient_block(const wcsph_neighbours *nb, const wcsph
                                          wcsph_scratch *s, int lo, int hi, const int stress,
                                          const int antuono, const int periodic)
 {
-    const wcsph_rows *rows = nb->rows;
+    const fluid_rows *rows = nb->rows;
     const fsi_periodic *per = periodic_of(nb);
     /* Local restrict pointers: the stores into J's sums cannot alias the particles'
      * fields, so the loop keeps them in registers. */
@@ -235,7 +249,7 @@ void wcsph_gradients(const wcsph_neighbours *nb, const wcsph_params *prm,
             memset(&s->density_gradient[i * FSI_DIM], 0, FSI_DIM * sizeof(double));
         }
         if (stress || antuono) {
-            /* Even blocks, then odd ones (wcsph_rows.h): no two running blocks share a
+            /* Even blocks, then odd ones (fluid_rows.h): no two running blocks share a
              * particle. Wall and solid rows write only their own sums. */
             for (int parity = 0; parity < 2; parity++) {
 #pragma omp for schedule(dynamic, 1)
@@ -374,14 +388,14 @@ static inline void boundary_pair(const pair_context *c, int i, int j, const doub
 }
 
 /* The rates' sums of the fluid particles of [lo, hi): each fluid pair once, written to
- * both particles (antisymmetric terms, wcsph_rows.h), each boundary pair on I's side.
+ * both particles (antisymmetric terms, fluid_rows.h), each boundary pair on I's side.
  * Returns the pairs within the support. */
 static ALWAYS_INLINE long long rates_block(const wcsph_neighbours *nb, const pair_context *c,
                                            double *drho_dt, double *dv_dt, double *diffusion,
                                            int lo, int hi, const int stress,
                                            const int antuono, const int periodic)
 {
-    const wcsph_rows *rows = nb->rows;
+    const fluid_rows *rows = nb->rows;
     const fsi_periodic *per = periodic_of(nb);
     const fluid_particles *p = c->p;
     const wcsph_params *prm = c->prm;
@@ -522,7 +536,7 @@ void wcsph_rates(const wcsph_neighbours *nb, const wcsph_params *prm, const flui
             drho_dt[i] = diffusion[i] = 0.0;
             memset(&dv_dt[i * FSI_DIM], 0, FSI_DIM * sizeof *dv_dt);
         }
-        /* Even blocks, then odd ones (wcsph_rows.h). */
+        /* Even blocks, then odd ones (fluid_rows.h). */
         for (int parity = 0; parity < 2; parity++) {
 #pragma omp for schedule(dynamic, 1) reduction(+ : pairs)
             for (int b = parity; b < n_blocks; b += 2)

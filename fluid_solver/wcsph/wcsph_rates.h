@@ -18,7 +18,7 @@
 #include "fluid_particles.h"
 #include "tait_eos.h"
 #include "verlet_list.h"
-#include "wcsph_rows.h"
+#include "fluid_rows.h"
 #include "wendland_c2.h"
 
 /* Bound on the Frobenius condition number of the renormalisation matrix: beyond it (a
@@ -54,10 +54,10 @@ int wcsph_scratch_reserve(wcsph_scratch *s, int n);
 void wcsph_scratch_free(wcsph_scratch *s);
 
 /* What the passes walk: the Verlet candidates (full rows, for the walls' and solid's
- * own sums), the WCSPH rows built from them (wcsph_rows.h), the kernel. */
+ * own sums), the WCSPH rows built from them (fluid_rows.h), the kernel. */
 typedef struct {
     const fluid_verlet *list;
-    const wcsph_rows *rows;
+    const fluid_rows *rows;
     const wendland_c2_kernel *kernel;
 } wcsph_neighbours;
 
@@ -67,6 +67,11 @@ static inline int wcsph_in_sums(const wcsph_params *prm, const fluid_particles *
     return (p->flags[j] & (FLUID_PARTICLE_FLUID | FLUID_PARTICLE_WALL)) ||
            (prm->solid_dummy && (p->flags[j] & FLUID_PARTICLE_MOVING_BOUNDARY));
 }
+
+/* The pairs of the rows now within the support with their F (wendland_c2.h), from the
+ * rows' candidates (fluid_rows_build, without boundary rows). */
+void wcsph_pairs(fluid_rows *rows, const wendland_c2_kernel *k, const fsi_periodic *per,
+                 const fluid_particles *p);
 
 /* Pass 1, every wall and solid particle with a row: its state from the fluid within
  * the support (walls/ghost_walls.h, 004 Eqs. 10-11); u (the velocity the viscous terms
@@ -106,7 +111,7 @@ void wcsph_gradients(const wcsph_neighbours *nb, const wcsph_params *prm,
  * pulls. Against a solid particle J closer than (dx + dx_J) / 2 the soft contact of
  * soft_contact.h adds k c0^2 zeta f (x_I - x_J) / r^2. Every pair term between fluid
  * particles is antisymmetric (m_I times it): it is evaluated once per pair
- * (wcsph_rows.h) and momentum is conserved to round-off. Passes 1 and 2 must have run. */
+ * (fluid_rows.h) and momentum is conserved to round-off. Passes 1 and 2 must have run. */
 void wcsph_rates(const wcsph_neighbours *nb, const wcsph_params *prm, const fluid_particles *p,
                  const double *u, wcsph_scratch *s, double *drho_dt, double *dv_dt);
 

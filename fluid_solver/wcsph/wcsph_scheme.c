@@ -2,7 +2,7 @@
  * rates is
  *   1. pressure and volume of every fluid particle from its density (Tait, 004 Eq. 4);
  *   2. the Verlet candidates (neighbours/verlet_list.h) and, at each of their builds,
- *      the scheme's rows (wcsph_rows.h: each fluid pair once); the pairs of the rows
+ *      the scheme's rows (fluid_rows.h: each fluid pair once); the pairs of the rows
  *      now within the support and their kernel gradients;
  *   3. the dummy wall particles, and the solid's particles when they are dummies, from
  *      the fluid around them (004 Eqs. 10-11, walls/ghost_walls.h);
@@ -39,7 +39,7 @@ struct fluid_scheme {
     wcsph_params prm;
     fluid_verlet list;
     double skin;                /* of the candidate lists [m] */
-    wcsph_rows rows;
+    fluid_rows rows;
     wcsph_scratch scratch;
     const unsigned char *free_slip;
     double *velocity_for_viscosity;
@@ -138,7 +138,7 @@ fluid_scheme *fluid_scheme_create(const fsi_case *c, const char *role,
     s->skin = fsi_case_get_real(c, own, "neighbour_skin", FLUID_VERLET_SKIN) * s->kernel.support;
     fluid_verlet_init(&s->list);
     fsi_grid_set_periodic(&s->list.grid, &props->periodic);
-    wcsph_rows_init(&s->rows);
+    fluid_rows_init(&s->rows);
     if (reserve(s, p->n) != 0) {
         fluid_scheme_free(s);
         snprintf(msg, msg_size, "out of memory for the WCSPH scheme of %d particles", p->n);
@@ -152,7 +152,7 @@ void fluid_scheme_free(fluid_scheme *s)
     if (!s)
         return;
     fluid_verlet_free(&s->list);
-    wcsph_rows_free(&s->rows);
+    fluid_rows_free(&s->rows);
     wcsph_scratch_free(&s->scratch);
     fluid_wc_integrator_free(&s->predictor_corrector);
     fluid_wc_verlet_free(&s->verlet_integrator);
@@ -201,15 +201,15 @@ int fluid_scheme_rates(fluid_scheme *s, fluid_particles *p, double *drho_dt, dou
     const int built = fluid_verlet_update(&s->list, p, s->kernel.support, s->skin);
     phase(s, PHASE_SEARCH, 0);
     phase(s, PHASE_ROWS, 1);
-    const int rc = built < 0 ? -1 : built > 0 ? wcsph_rows_build(&s->rows, &s->list, p) : 0;
+    const int rc = built < 0 ? -1 : built > 0 ? fluid_rows_build(&s->rows, &s->list, p, 0) : 0;
     if (rc != 0) {
         phase(s, PHASE_ROWS, 0);
         snprintf(msg, msg_size, "cannot build the neighbour lists of %d particles (a "
                  "position is not finite, or memory ran out)", p->n);
         return -1;
     }
-    wcsph_rows_filter(&s->rows, &s->kernel,
-                      fsi_periodic_any(&s->list.periodic) ? &s->list.periodic : NULL, p);
+    wcsph_pairs(&s->rows, &s->kernel,
+                fsi_periodic_any(&s->list.periodic) ? &s->list.periodic : NULL, p);
     phase(s, PHASE_ROWS, 0);
     const wcsph_neighbours nb = neighbours(s);
     phase(s, PHASE_WALLS, 1);

@@ -129,11 +129,25 @@ static void fields_free(fields *s)
     free(s->div);
 }
 
-static void apply(const ulph_operators *ops, fields *s)
+static void apply(const ulph_operators *ops, const fluid_particles *p, fields *s)
 {
-    ulph_gradient_scalar(ops, s->f, s->grad);
-    ulph_gradient_vector(ops, s->u, s->lg);
-    ulph_divergence(ops, s->u, s->div);
+    ulph_gradient_scalar(ops, p, s->f, s->grad);
+    ulph_gradient_vector(ops, p, s->u, s->lg);
+    ulph_divergence(ops, p, s->u, s->div);
+}
+
+/* Whether every kept pair's kernel value is finite. */
+static int pairs_finite(const ulph_operators *ops)
+{
+    const fluid_rows *r = &ops->rows;
+    int finite = 1;
+    for (int i = 0; i < ops->n; i++) {
+        for (int64_t e = r->offset[i]; e < r->fluid_end[i]; e++)
+            finite &= isfinite(r->f[e]);
+        for (int64_t e = r->split[i]; e < r->boundary_end[i]; e++)
+            finite &= isfinite(r->f[e]);
+    }
+    return finite;
 }
 
 /* Smallest distance from particle i to a face of the unit box. */
@@ -245,7 +259,7 @@ static void check_against_brute_force(const ulph_operators *ops, const gaussian_
             const double w = k->alpha * (exp(-r2 / (k->h * k->h)) - exp(-9.0));
             fsi_mat_add_outer(m, w * p->volume[j], rel, rel);
         }
-        bad_count += count != ops->pairs.offset[i + 1] - ops->pairs.offset[i];
+        bad_count += count != ops->neighbours[i];
         const double *mi = ops->shape + (int64_t)i * FSI_MAT_SIZE;
         for (int c = 0; c < FSI_MAT_SIZE; c++)
             worst = fmax(worst, fabs(mi[c] - m[c]) / fsi_mat_norm(m));
@@ -292,7 +306,7 @@ static void check_linear(void)
         for (int d = 0; d < FSI_DIM; d++)
             fld.u[i * FSI_DIM + d] += b[d];
     }
-    apply(&ops, &fld);
+    apply(&ops, &p, &fld);
     double trace = 0.0;
     for (int d = 0; d < FSI_DIM; d++)
         trace += FSI_MAT(A, d, d);
@@ -367,7 +381,7 @@ static field_error quadratic_error(int side, double jitter)
             fld.u[i * FSI_DIM + s] = 0.5 * fsi_vec_dot(x, hx);
         }
     }
-    apply(&ops, &fld);
+    apply(&ops, &p, &fld);
     field_error e = {0.0, 0.0, 0.0};
     int interior = 0;
     for (int i = 0; i < n; i++) {
@@ -487,12 +501,9 @@ static void check_singular(void)
         for (int d = 0; d < FSI_DIM; d++)
             fld.u[i * FSI_DIM + d] = cos(2.0 * p.x[i * FSI_DIM + d]) + d;
     }
-    apply(&ops, &fld);
+    apply(&ops, &p, &fld);
 
-    int finite = 1, lattice_flagged = 0;
-    for (int64_t q = 0; q < ops.pairs.n_pairs; q++)
-        for (int d = 0; d < FSI_DIM; d++)
-            finite &= isfinite(ops.g[q * FSI_DIM + d]) && isfinite(ops.pairs.w[q]);
+    int finite = pairs_finite(&ops), lattice_flagged = 0;
     for (int i = 0; i < first; i++)
         lattice_flagged += ops.flags[i] != 0;
     CHECK(lattice_flagged == 0, "%d lattice particles flagged", lattice_flagged);
@@ -514,7 +525,7 @@ static void check_singular(void)
           near_cond);
     for (int e = 0; e < EXTRA; e++) {
         const int i = first + e;
-        const int64_t row = ops.pairs.offset[i + 1] - ops.pairs.offset[i];
+        const int64_t row = ops.neighbours[i];
         const int64_t expect = e < PAIR ? 0 : e < TRIANGLE ? 1 : e < LINE ? 2 : 4;
         CHECK(row == expect, "extra particle %d has %ld neighbours, expected %ld", e, (long)row,
               (long)expect);
@@ -568,7 +579,7 @@ static void run(run_result *r, const fluid_particles *p, int threads, int reuse)
         for (int d = 0; d < FSI_DIM; d++)
             r->s.u[i * FSI_DIM + d] = sin(3.0 * x[(d + 1) % FSI_DIM]) * x[d];
     }
-    apply(&r->ops, &r->s);
+    apply(&r->ops, p, &r->s);
 }
 
 static void run_free(run_result *r)
@@ -580,17 +591,20 @@ static void run_free(run_result *r)
 /* Bytes that differ between two runs, over lists, M, M^-1, flags and outputs. */
 static long differing_bytes(const run_result *a, const run_result *b)
 {
-    if (a->ops.pairs.n != b->ops.pairs.n || a->ops.pairs.n_pairs != b->ops.pairs.n_pairs)
+    if (a->ops.n != b->ops.n || a->ops.n_pairs != b->ops.n_pairs ||
+        a->ops.rows.offset[a->ops.n] != b->ops.rows.offset[b->ops.n])
         return -1;
-    const size_t n = (size_t)a->ops.pairs.n, np = (size_t)a->ops.pairs.n_pairs;
+    const size_t n = (size_t)a->ops.n, np = (size_t)a->ops.rows.offset[n];
     const struct {
         const void *x, *y;
         size_t size;
     } parts[] = {
-        {a->ops.pairs.offset, b->ops.pairs.offset, (n + 1) * sizeof(int64_t)},
-        {a->ops.pairs.neighbour, b->ops.pairs.neighbour, np * sizeof(int32_t)},
-        {a->ops.pairs.w, b->ops.pairs.w, np * sizeof(double)},
-        {a->ops.g, b->ops.g, np * FSI_DIM * sizeof(double)},
+        {a->ops.rows.offset, b->ops.rows.offset, (n + 1) * sizeof(int64_t)},
+        {a->ops.rows.fluid_end, b->ops.rows.fluid_end, n * sizeof(int64_t)},
+        {a->ops.rows.boundary_end, b->ops.rows.boundary_end, n * sizeof(int64_t)},
+        {a->ops.rows.pair, b->ops.rows.pair, np * sizeof(int32_t)},
+        {a->ops.rows.f, b->ops.rows.f, np * sizeof(double)},
+        {a->ops.neighbours, b->ops.neighbours, n * sizeof(int32_t)},
         {a->ops.shape, b->ops.shape, n * FSI_MAT_SIZE * sizeof(double)},
         {a->ops.shape_inv, b->ops.shape_inv, n * FSI_MAT_SIZE * sizeof(double)},
         {a->ops.flags, b->ops.flags, n},
@@ -662,7 +676,7 @@ static void check_threads(void)
     run(&grown, &p, 2, 1); /* the same operators, now grown */
     const long d12 = differing_bytes(&one, &two), dgrown = differing_bytes(&one, &grown);
     printf("threads: %d particles, %ld pairs; 1 vs 2 threads: %ld bytes differ; reused vs "
-           "fresh operators: %ld bytes differ\n", p.n, (long)one.ops.pairs.n_pairs, d12, dgrown);
+           "fresh operators: %ld bytes differ\n", p.n, (long)one.ops.n_pairs, d12, dgrown);
     CHECK(d12 == 0, "1 and 2 threads differ in %ld bytes", d12);
     CHECK(dgrown == 0, "reused operators differ from fresh ones in %ld bytes", dgrown);
     run_free(&one);
@@ -687,10 +701,10 @@ static void check_input(void)
     ulph_operators_init(&ops);
     CHECK(ulph_operators_update(&ops, &k, &grid, &p) == -1, "a grid of %d points accepted for %d",
           p.n - 1, p.n);
-    CHECK(ops.pairs.n == 0 && ops.pairs.offset == NULL, "refused update left state behind");
+    CHECK(ops.n == 0 && ops.shape == NULL, "refused update left state behind");
     CHECK(fsi_grid_build(&grid, p.x, 0, k.support) == 0, "empty grid build failed");
     p.n = 0;
-    CHECK(ulph_operators_update(&ops, &k, &grid, &p) == 0 && ops.pairs.n == 0 && ops.pairs.n_pairs == 0,
+    CHECK(ulph_operators_update(&ops, &k, &grid, &p) == 0 && ops.n == 0 && ops.n_pairs == 0,
           "no particles refused");
     fsi_grid_free(&grid);
     ulph_operators_free(&ops);

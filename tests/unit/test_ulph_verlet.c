@@ -1,9 +1,9 @@
 /* Candidate lists with a skin (fluid_solver/ulph/verlet_list.h) give the operators the
  * same neighbours as a fresh grid search:
  *  - after every particle moved less than half the skin, the lists are kept, and each
- *    row of ulph_operators_update_list holds exactly the neighbours within the support
- *    of a fresh ulph_operators_update (as a set; the order may differ), with M equal to
- *    round-off;
+ *    particle's neighbours in the rows of ulph_operators_update_list are exactly those
+ *    within the support of a fresh ulph_operators_update (as a set; the order may
+ *    differ), with M equal to round-off;
  *  - only wall particles with no fluid particle within the support are idle (empty
  *    row, ULPH_IDLE_WALL, not counted singular), and some are, far from the water;
  *  - a particle that moved more than half the skin, or another particle count, makes
@@ -59,12 +59,56 @@ static int compare_int(const void *a, const void *b)
     return *(const int32_t *)a - *(const int32_t *)b;
 }
 
-/* Row i of ops sorted into out; its length. */
-static int64_t sorted_row(const ulph_operators *ops, int i, int32_t *out)
+/* Every particle's neighbours within the support from the pair-once rows of ops (a
+ * fluid pair in the lower index's row, a boundary pair in the fluid particle's row,
+ * walls' full rows), as sorted CSR rows: offset[n + 1], list. */
+typedef struct {
+    int64_t *offset;
+    int32_t *list;
+} neighbour_sets;
+
+static void add_pair(neighbour_sets *s, int64_t *fill, int i, int j, int pass)
 {
-    const int64_t len = ops->pairs.offset[i + 1] - ops->pairs.offset[i];
-    memcpy(out, ops->pairs.neighbour + ops->pairs.offset[i], (size_t)len * sizeof *out);
-    qsort(out, (size_t)len, sizeof *out, compare_int);
+    if (pass == 0)
+        s->offset[i + 1]++;
+    else
+        s->list[fill[i]++] = j;
+}
+
+static neighbour_sets expand(const ulph_operators *ops)
+{
+    const fluid_rows *r = &ops->rows;
+    const int n = ops->n;
+    neighbour_sets s = {calloc((size_t)n + 1, sizeof(int64_t)), NULL};
+    int64_t *fill = calloc((size_t)n + 1, sizeof *fill);
+    for (int pass = 0; pass < 2; pass++) {
+        if (pass == 1) {
+            for (int i = 0; i < n; i++)
+                s.offset[i + 1] += s.offset[i];
+            memcpy(fill, s.offset, (size_t)n * sizeof *fill);
+            s.list = malloc((size_t)(s.offset[n] > 0 ? s.offset[n] : 1) * sizeof *s.list);
+        }
+        for (int i = 0; i < n; i++) {
+            for (int64_t e = r->offset[i]; e < r->fluid_end[i]; e++) {
+                add_pair(&s, fill, i, r->pair[e], pass);
+                add_pair(&s, fill, r->pair[e], i, pass);
+            }
+            for (int64_t e = r->split[i]; e < r->boundary_end[i]; e++)
+                add_pair(&s, fill, i, r->pair[e], pass);
+        }
+    }
+    for (int i = 0; i < n; i++)
+        qsort(s.list + s.offset[i], (size_t)(s.offset[i + 1] - s.offset[i]), sizeof *s.list,
+              compare_int);
+    free(fill);
+    return s;
+}
+
+/* Row i of the sets into out; its length. */
+static int64_t sorted_row(const neighbour_sets *s, int i, int32_t *out)
+{
+    const int64_t len = s->offset[i + 1] - s->offset[i];
+    memcpy(out, s->list + s->offset[i], (size_t)len * sizeof *out);
     return len;
 }
 
@@ -93,12 +137,13 @@ static void test_same_neighbours(void)
     fsi_grid_init(&grid);
     CHECK(fsi_grid_build(&grid, p.x, p.n, k.support) == 0, "grid build failed");
     CHECK(ulph_operators_update(&fresh, &k, &grid, &p) == 0, "fresh operators failed");
-    CHECK(ulph_operators_update_list(&from_list, &k, &v, &p) == 0, "list operators failed");
+    CHECK(ulph_operators_update_list(&from_list, &k, &v, &p, 1) == 0, "list operators failed");
+    neighbour_sets sets_list = expand(&from_list), sets_fresh = expand(&fresh);
 
     int32_t *a = malloc((size_t)p.n * sizeof *a), *b = malloc((size_t)p.n * sizeof *b);
     int idle = 0, bad_idle = 0, bad_rows = 0, bad_m = 0;
     for (int i = 0; i < p.n; i++) {
-        const int64_t la = sorted_row(&from_list, i, a), lb = sorted_row(&fresh, i, b);
+        const int64_t la = sorted_row(&sets_list, i, a), lb = sorted_row(&sets_fresh, i, b);
         if (from_list.flags[i] & ULPH_IDLE_WALL) {
             idle++;
             int fluid = 0;
@@ -114,7 +159,7 @@ static void test_same_neighbours(void)
             bad_m += fabs(ma[c] - mb[c]) > 1e-12 * fsi_mat_norm(mb);
     }
     printf("verlet: %d particles, %d idle walls, %lld pairs from the lists, %lld fresh\n",
-           p.n, idle, (long long)from_list.pairs.n_pairs, (long long)fresh.pairs.n_pairs);
+           p.n, idle, (long long)from_list.n_pairs, (long long)fresh.n_pairs);
     CHECK(idle > 100, "only %d idle walls", idle);
     CHECK(bad_idle == 0, "%d idle particles are not walls away from the water", bad_idle);
     CHECK(bad_rows == 0, "%d rows differ from a fresh search", bad_rows);
@@ -147,6 +192,10 @@ static void test_same_neighbours(void)
 
     free(a);
     free(b);
+    free(sets_list.offset);
+    free(sets_list.list);
+    free(sets_fresh.offset);
+    free(sets_fresh.list);
     fsi_grid_free(&grid);
     fluid_verlet_free(&v);
     fluid_verlet_free(&two);

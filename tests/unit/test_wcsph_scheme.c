@@ -1,4 +1,4 @@
-/* The rates of WCSPH (fluid_solver/wcsph: wcsph_rows, wcsph_rates, over the shared
+/* The rates of WCSPH (fluid_solver/wcsph: fluid_rows, wcsph_rates, over the shared
  * Wendland kernel, Tait EOS, dummy walls and soft contact):
  *  - hydrostatic tank: a column at the hydrostatic pressure (density from the Tait EOS,
  *    004 Eq. 4) in a tank of dummy walls four layers thick (004 Eqs. 10-11): every fluid
@@ -29,7 +29,7 @@
 #include "tait_eos.h"
 #include "verlet_list.h"
 #include "wcsph_keys.h"
-#include "wcsph_rows.h"
+#include "fluid_rows.h"
 #include "wcsph_rates.h"
 #include "wendland_c2.h"
 
@@ -42,7 +42,7 @@ typedef struct {
     tait_eos eos;
     wcsph_params prm;
     fluid_verlet list;
-    wcsph_rows rows;
+    fluid_rows rows;
     wcsph_neighbours nb;   /* of the last scene_rates */
     wcsph_scratch scratch;
     double *u, *drho, *acc, *extra;
@@ -58,7 +58,7 @@ static void scene_alloc(scene *s, int n, double dx, double c0)
                             .viscosity = 1e-3, .beta1 = 0.01, .beta2 = 0.0, .delta = 0.1,
                             .contact = 0.01, .spacing = dx};
     fluid_verlet_init(&s->list);
-    wcsph_rows_init(&s->rows);
+    fluid_rows_init(&s->rows);
     wcsph_scratch_reserve(&s->scratch, n);
     s->u = calloc((size_t)n * FSI_DIM, sizeof(double));
     s->drho = calloc((size_t)n, sizeof(double));
@@ -70,7 +70,7 @@ static void scene_free(scene *s)
 {
     fluid_particles_free(&s->p);
     fluid_verlet_free(&s->list);
-    wcsph_rows_free(&s->rows);
+    fluid_rows_free(&s->rows);
     wcsph_scratch_free(&s->scratch);
     free(s->u);
     free(s->drho);
@@ -89,8 +89,8 @@ static void scene_rates(scene *s)
         }
     fluid_verlet_invalidate(&s->list);
     CHECK(fluid_verlet_update(&s->list, p, s->k.support, 0.0) >= 0, "verlet list");
-    CHECK(wcsph_rows_build(&s->rows, &s->list, p) == 0, "rows");
-    wcsph_rows_filter(&s->rows, &s->k, NULL, p);
+    CHECK(fluid_rows_build(&s->rows, &s->list, p, 0) == 0, "rows");
+    wcsph_pairs(&s->rows, &s->k, NULL, p);
     s->nb = (wcsph_neighbours){&s->list, &s->rows, &s->k};
     const wcsph_neighbours nb = s->nb;
     wcsph_walls(&nb, &s->eos, s->prm.gravity, NULL, p, s->u);

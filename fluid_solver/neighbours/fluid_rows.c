@@ -1,5 +1,5 @@
-/* WCSPH rows and their blocks (wcsph_rows.h). */
-#include "wcsph_rows.h"
+/* Pair-once rows and their blocks (fluid_rows.h). */
+#include "fluid_rows.h"
 
 #include <stdlib.h>
 
@@ -8,14 +8,14 @@
 
 /* The smallest block: a block costs a little scheduling, and blocks far below the
  * reach of a row would not make the phases any shorter. */
-#define WCSPH_MIN_BLOCK 256
+#define FLUID_ROWS_MIN_BLOCK 256
 
-void wcsph_rows_init(wcsph_rows *r)
+void fluid_rows_init(fluid_rows *r)
 {
-    *r = (wcsph_rows){0};
+    *r = (fluid_rows){0};
 }
 
-void wcsph_rows_free(wcsph_rows *r)
+void fluid_rows_free(fluid_rows *r)
 {
     free(r->offset);
     free(r->split);
@@ -25,10 +25,10 @@ void wcsph_rows_free(wcsph_rows *r)
     free(r->boundary_end);
     free(r->pair);
     free(r->f);
-    wcsph_rows_init(r);
+    fluid_rows_init(r);
 }
 
-static int reserve(wcsph_rows *r, int n, int64_t n_pairs)
+static int reserve(fluid_rows *r, int n, int64_t n_pairs)
 {
     int failed = 0;
     if (!r->offset || n > r->point_capacity) {
@@ -51,13 +51,16 @@ static int reserve(wcsph_rows *r, int n, int64_t n_pairs)
     return failed ? -1 : 0;
 }
 
-/* Whether candidate j belongs to fluid particle i's row. */
-static inline int in_row(const fluid_particles *p, int i, int j)
+/* Whether candidate j belongs to i's row. */
+static inline int in_row(const fluid_particles *p, int boundary_rows, int i, int j)
 {
+    if (!(p->flags[i] & FLUID_PARTICLE_FLUID))
+        return boundary_rows;
     return !(p->flags[j] & FLUID_PARTICLE_FLUID) || j > i;
 }
 
-int wcsph_rows_build(wcsph_rows *r, const fluid_verlet *list, const fluid_particles *p)
+int fluid_rows_build(fluid_rows *r, const fluid_verlet *list, const fluid_particles *p,
+                     int boundary_rows)
 {
     const int n = p->n;
     r->n = 0;
@@ -69,9 +72,8 @@ int wcsph_rows_build(wcsph_rows *r, const fluid_verlet *list, const fluid_partic
 #pragma omp parallel for schedule(dynamic, FLUID_CHUNK) if (parallel)
     for (int i = 0; i < n; i++) {
         int64_t count = 0;
-        if (p->flags[i] & FLUID_PARTICLE_FLUID)
-            for (int64_t c = list->offset[i]; c < list->offset[i + 1]; c++)
-                count += in_row(p, i, list->candidate[c]);
+        for (int64_t c = list->offset[i]; c < list->offset[i + 1]; c++)
+            count += in_row(p, boundary_rows, i, list->candidate[c]);
         offset[i + 1] = count;
     }
     for (int i = 0; i < n; i++)
@@ -96,6 +98,8 @@ int wcsph_rows_build(wcsph_rows *r, const fluid_verlet *list, const fluid_partic
             }
         } else {
             r->split[i] = e;
+            for (int64_t c = list->offset[i]; boundary_rows && c < list->offset[i + 1]; c++)
+                r->neighbour[e++] = list->candidate[c];
         }
     }
     /* Blocks: block b + 1 ends beyond the farthest fluid neighbour of every particle
@@ -103,7 +107,7 @@ int wcsph_rows_build(wcsph_rows *r, const fluid_verlet *list, const fluid_partic
     int nb = 0, reach = 0, i = 0;
     r->block_start[nb++] = 0;
     while (i < n) {
-        int end = i + WCSPH_MIN_BLOCK;
+        int end = i + FLUID_ROWS_MIN_BLOCK;
         if (nb >= 2 && end <= reach)
             end = reach + 1;
         end = end < n ? end : n;
@@ -113,36 +117,16 @@ int wcsph_rows_build(wcsph_rows *r, const fluid_verlet *list, const fluid_partic
         r->block_start[nb++] = end;
     }
     r->n_blocks = nb - 1;
+    r->boundary_rows = boundary_rows;
     r->n = n;
     return 0;
 }
 
-/* The candidates of neighbour[lo .. hi-1] within the support into pair and f from lo
- * on; returns the end. */
-static inline int64_t filter_segment(wcsph_rows *r, const wendland_c2_kernel *k,
-                                     const fsi_periodic *per, const double *x, int i,
-                                     int64_t lo, int64_t hi)
-{
-    int64_t m = lo;
-    for (int64_t e = lo; e < hi; e++) {
-        const int j = r->neighbour[e];
-        double rel[FSI_DIM];
-        const double r2 = fluid_pair_vector_r2(per, x, i, j, rel);
-        const int inside = r2 < k->support2;
-        r->pair[m] = j;
-        r->f[m] = wendland_c2_f_inside(k, r2) * (double)inside; /* no branch */
-        m += inside;
-    }
-    return m;
-}
-
-void wcsph_rows_filter(wcsph_rows *r, const wendland_c2_kernel *k, const fsi_periodic *per,
+void fluid_rows_filter(fluid_rows *r, double support2, const fsi_periodic *per,
                        const fluid_particles *p)
 {
     const int n = r->n;
 #pragma omp parallel for schedule(dynamic, FLUID_CHUNK) if (n >= FLUID_PARALLEL_MIN_PARTICLES)
-    for (int i = 0; i < n; i++) {
-        r->fluid_end[i] = filter_segment(r, k, per, p->x, i, r->offset[i], r->split[i]);
-        r->boundary_end[i] = filter_segment(r, k, per, p->x, i, r->split[i], r->offset[i + 1]);
-    }
+    for (int i = 0; i < n; i++)
+        fluid_rows_filter_row(r, support2, per, p->x, i);
 }
