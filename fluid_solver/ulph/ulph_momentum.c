@@ -5,6 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "always_inline.h"
 #include "small_tensor.h"
 #include "soft_contact.h"
 
@@ -116,9 +117,9 @@ static inline void boundary_pair(const pair_context *c, int i, int j, const doub
  *   f_I += V_J (Q + pi_IJ y_I),  f_J -= V_I (Q + pi_IJ y_J)     (000 Eqs. 23, 26)
  *   div_I += w V_J (v_J - v_I) . y_I,  div_J += w V_I (v_J - v_I) . y_J   (000 Eq. 16)
  * (seen from J, x_JI = -x_IJ and v_I - v_J change sign together). */
-static void rates_block(void *context, int lo, int hi)
+static FSI_ALWAYS_INLINE void rates_rows(const pair_context *c, int lo, int hi,
+                                         const int periodic, const int laplacian)
 {
-    const pair_context *c = context;
     const ulph_operators *ops = c->ops;
     const fluid_rows *rows = &ops->rows;
     const fluid_particles *p = c->p;
@@ -128,7 +129,6 @@ static void rates_block(void *context, int lo, int hi)
     const int32_t *restrict pair = rows->pair;
     double *restrict force = c->force, *restrict div = c->divergence;
     const double av = c->av, eps2 = c->eps2, lap_scale = c->mu_laplacian * 4.0 * FSI_DIM;
-    const int laplacian = c->mu_laplacian > 0.0;
     for (int i = lo; i < hi; i++) {
         if (!(p->flags[i] & FLUID_PARTICLE_FLUID))
             continue;
@@ -143,8 +143,8 @@ static void rates_block(void *context, int lo, int hi)
         }
         const double vol_i = vol[i], tr_i = fsi_mat_trace(&shape[(size_t)i * FSI_MAT_SIZE]);
         double f_i[FSI_DIM] = {0}, div_i = 0.0;
-        const int periodic = fsi_periodic_any(&ops->periodic);
-        for (int64_t e = rows->offset[i]; e < rows->fluid_end[i]; e++) {
+        const int64_t fluid_end = rows->fluid_end[i];
+        for (int64_t e = rows->offset[i]; e < fluid_end; e++) {
             const int j = pair[e];
             const double w = pair_w[e];
             const double *A_j = &A[(size_t)j * FSI_MAT_SIZE];
@@ -203,6 +203,18 @@ static void rates_block(void *context, int lo, int hi)
             force[i * FSI_DIM + d] += f_i[d];
         div[i] += div_i;
     }
+}
+
+static void rates_block(void *context, int lo, int hi)
+{
+    const pair_context *c = context;
+    const int laplacian = c->mu_laplacian > 0.0;
+    if (fsi_periodic_any(&c->ops->periodic)) /* the same code with each choice a constant */
+        rates_rows(c, lo, hi, 1, laplacian);
+    else if (laplacian)
+        rates_rows(c, lo, hi, 0, 1);
+    else
+        rates_rows(c, lo, hi, 0, 0);
 }
 
 static pair_context make_context(const ulph_operators *ops, const ulph_momentum_params *prm,

@@ -10,6 +10,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "always_inline.h"
 #include "grow.h"
 
 void ulph_operators_init(ulph_operators *ops)
@@ -92,35 +93,70 @@ typedef struct {
     const fluid_particles *p;
 } shape_context;
 
-/* One pair's share of M (000 Eq. 15) and the counts of particle i, wv = w V_J. */
-static inline void shape_add(ulph_operators *ops, int i, double wv, const double *rel, double r2)
+/* One pair's share of M (000 Eq. 15): wv V x_IJ (x) x_IJ into m (x_JI (x) x_JI is the
+ * same), and of the counts. */
+static inline void shape_add(double *restrict m, int *count, int *useful, double wv,
+                             const double *rel, double r2)
 {
-    fsi_mat_add_outer(&ops->shape[(size_t)i * FSI_MAT_SIZE], wv, rel, rel);
-    ops->neighbours[i]++;
-    ops->informative[i] += wv > 0.0 && r2 > 0.0;
+    for (int a = 0; a < FSI_DIM; a++)
+        for (int b = 0; b < FSI_DIM; b++)
+            m[a * FSI_DIM + b] += wv * rel[a] * rel[b];
+    ++*count;
+    *useful += wv > 0.0 && r2 > 0.0;
+}
+
+/* The pairs of the particles of [lo, hi): I's sums in registers, J's (a fluid pair) in
+ * place. periodic is a constant in each copy the compiler makes. */
+static FSI_ALWAYS_INLINE void shape_rows(ulph_operators *ops, const fluid_particles *p, int lo,
+                                         int hi, const int periodic)
+{
+    const fluid_rows *r = &ops->rows;
+    const double *restrict x = p->x, *restrict volume = p->volume, *restrict w = r->f;
+    const int32_t *restrict pair = r->pair;
+    double *restrict shape = ops->shape;
+    int32_t *restrict neighbours = ops->neighbours, *restrict informative = ops->informative;
+    for (int i = lo; i < hi; i++) {
+        double m[FSI_MAT_SIZE] = {0}, x_i[FSI_DIM];
+        for (int d = 0; d < FSI_DIM; d++)
+            x_i[d] = x[i * FSI_DIM + d];
+        const double vol_i = volume[i];
+        int count = 0, useful = 0;
+        const int64_t fluid_end = r->fluid_end[i], split = r->split[i], end = r->boundary_end[i];
+        for (int64_t e = r->offset[i]; e < end; e++) {
+            if (e == fluid_end)
+                e = split; /* the fluid segment done, the boundary one */
+            if (e >= end)
+                break;
+            const int j = pair[e];
+            double rel[FSI_DIM], r2 = 0.0;
+            for (int d = 0; d < FSI_DIM; d++)
+                rel[d] = x[j * FSI_DIM + d] - x_i[d];
+            if (periodic)
+                fsi_periodic_min_image(&ops->periodic, rel);
+            for (int d = 0; d < FSI_DIM; d++)
+                r2 += rel[d] * rel[d];
+            shape_add(m, &count, &useful, w[e] * volume[j], rel, r2);
+            if (e < split) {
+                int c_j = 0, u_j = 0;
+                shape_add(&shape[(size_t)j * FSI_MAT_SIZE], &c_j, &u_j, w[e] * vol_i, rel, r2);
+                neighbours[j] += c_j;
+                informative[j] += u_j;
+            }
+        }
+        for (int c = 0; c < FSI_MAT_SIZE; c++)
+            shape[(size_t)i * FSI_MAT_SIZE + c] += m[c];
+        neighbours[i] += count;
+        informative[i] += useful;
+    }
 }
 
 static void shape_block(void *context, int lo, int hi)
 {
     const shape_context *c = context;
-    ulph_operators *ops = c->ops;
-    const fluid_rows *r = &ops->rows;
-    const double *x = c->p->x, *volume = c->p->volume;
-    for (int i = lo; i < hi; i++) {
-        for (int64_t e = r->offset[i]; e < r->fluid_end[i]; e++) {
-            const int j = r->pair[e];
-            double rel[FSI_DIM];
-            const double r2 = ulph_pair_vector(ops, x, i, j, rel);
-            shape_add(ops, i, r->f[e] * volume[j], rel, r2);
-            shape_add(ops, j, r->f[e] * volume[i], rel, r2); /* x_JI (x) x_JI = x_IJ (x) x_IJ */
-        }
-        for (int64_t e = r->split[i]; e < r->boundary_end[i]; e++) {
-            const int j = r->pair[e];
-            double rel[FSI_DIM];
-            const double r2 = ulph_pair_vector(ops, x, i, j, rel);
-            shape_add(ops, i, r->f[e] * volume[j], rel, r2);
-        }
-    }
+    if (fsi_periodic_any(&c->ops->periodic))
+        shape_rows(c->ops, c->p, lo, hi, 1);
+    else
+        shape_rows(c->ops, c->p, lo, hi, 0);
 }
 
 /* M_I exactly symmetric, its inverse under the rule; returns 1 when i is flagged

@@ -8,10 +8,10 @@
 
 #include "fluid_parallel.h"
 #include "ghost_walls.h"
+#include "always_inline.h"
 #include "small_tensor.h"
 #include "soft_contact.h"
 
-#define ALWAYS_INLINE inline __attribute__((always_inline))
 
 int wcsph_scratch_reserve(wcsph_scratch *s, int n)
 {
@@ -97,7 +97,7 @@ void wcsph_walls(const wcsph_neighbours *nb, const tait_eos *eos, const double *
 
 /* One side's share of the gradient sums of a pair: volume V of the other particle,
  * t = grad W (unweighted), du = u_J - u_I, drho = rho_J - rho_I. */
-static ALWAYS_INLINE void gradient_share(double *grad_u, double *bsum, double *grad_rho,
+static FSI_ALWAYS_INLINE void gradient_share(double *grad_u, double *bsum, double *grad_rho,
                                          double vol, const double *t, const double *du,
                                          const double *rel, double drho, const int stress,
                                          const int antuono)
@@ -118,7 +118,7 @@ static ALWAYS_INLINE void gradient_share(double *grad_u, double *bsum, double *g
 /* I's side of the gradient sums of the pair with boundary particle j (in the sums) at
  * rel, F = f (a fluid particle's boundary pair, or any pair of a wall's or solid
  * particle's row). */
-static ALWAYS_INLINE void gradient_one_sided(const fluid_particles *p, const double *u, int i,
+static FSI_ALWAYS_INLINE void gradient_one_sided(const fluid_particles *p, const double *u, int i,
                                              int j, const double *rel, double f, double *gu,
                                              double *bs, double *gr, const int stress,
                                              const int antuono)
@@ -134,7 +134,7 @@ static ALWAYS_INLINE void gradient_one_sided(const fluid_particles *p, const dou
 
 /* The gradient sums of the pairs of the fluid particles of [lo, hi) (their filtered
  * rows: fluid pairs both ways, boundary pairs on I's side). */
-static ALWAYS_INLINE void gradient_block(const wcsph_neighbours *nb, const wcsph_params *prm,
+static FSI_ALWAYS_INLINE void gradient_block(const wcsph_neighbours *nb, const wcsph_params *prm,
                                          const fluid_particles *p, const double *u,
                                          wcsph_scratch *s, int lo, int hi, const int stress,
                                          const int antuono, const int periodic)
@@ -390,7 +390,7 @@ static inline void boundary_pair(const pair_context *c, int i, int j, const doub
 /* The rates' sums of the fluid particles of [lo, hi): each fluid pair once, written to
  * both particles (antisymmetric terms, fluid_rows.h), each boundary pair on I's side.
  * Returns the pairs within the support. */
-static ALWAYS_INLINE long long rates_block(const wcsph_neighbours *nb, const pair_context *c,
+static FSI_ALWAYS_INLINE long long rates_block(const wcsph_neighbours *nb, const pair_context *c,
                                            double *drho_dt, double *dv_dt, double *diffusion,
                                            int lo, int hi, const int stress,
                                            const int antuono, const int periodic)
