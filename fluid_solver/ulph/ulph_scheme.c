@@ -190,18 +190,6 @@ double fluid_scheme_support(const fluid_scheme *s)
     return s->kernel.support;
 }
 
-/* 000 Eq. 24, rho_I = sum_J w_IJ m_J / sum_J w_IJ V_J over I and its neighbours (walls
- * included, with the mass of 000 Eq. 54), with a first-order correction:
- *
- *     rho_I = sum_J w_IJ V_J (rho_J - grad rho_I . x_IJ) / sum_J w_IJ V_J
- *
- * (grad rho_I from 000 Eq. 13). Without the correction the Shepard average of a
- * particle whose family is cut by the free surface is taken over deeper, denser
- * particles: in a hydrostatic column (drho/dy = -rho0 g / c0^2) it raises the top row's
- * density by about a spacing's worth, p by ~ rho0 g dx, twice the row's own pressure,
- * and every filter kicks the surface. The corrected average returns any linear density
- * field unchanged (inside, at the surface, at walls) and still removes the
- * lattice-scale noise Eq. 24 is for. */
 typedef struct {
     const ulph_operators *ops;
     const fluid_particles *p;

@@ -10,9 +10,9 @@
 #include "tait_eos.h"
 #include "fluid_rows.h"
 
-/* For every wall or moving boundary particle S with fluid neighbours f in its row of
- * rows (fluid_rows.h, with boundary rows, filtered, f = the kernel weight w_Sf of the
- * current evaluation; per: the periodic axes or NULL):
+/* For every wall or moving boundary particle S with fluid neighbours f in its own row
+ * of rows (fluid_rows.h, built with boundary rows and filtered, rows->f holding the
+ * kernel weights w_Sf of the current evaluation; per: the periodic axes or NULL):
  *   p_S = max(0, (sum_f p_f w_Sf + (g - a_S) . sum_f rho_f (x_S - x_f) w_Sf) / sum_f w_Sf)
  *                                                          (000 Eq. 52)
  * with a_S = p->boundary_acceleration of S: a moving wall's prescribed acceleration
