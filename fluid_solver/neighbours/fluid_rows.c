@@ -121,12 +121,3 @@ int fluid_rows_build(fluid_rows *r, const fluid_verlet *list, const fluid_partic
     r->n = n;
     return 0;
 }
-
-void fluid_rows_filter(fluid_rows *r, double support2, const fsi_periodic *per,
-                       const fluid_particles *p)
-{
-    const int n = r->n;
-#pragma omp parallel for schedule(dynamic, FLUID_CHUNK) if (n >= FLUID_PARALLEL_MIN_PARTICLES)
-    for (int i = 0; i < n; i++)
-        fluid_rows_filter_row(r, support2, per, p->x, i);
-}

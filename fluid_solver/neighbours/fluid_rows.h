@@ -11,7 +11,7 @@
  * in its boundary segment (for a scheme that needs the walls' own sums over the rows,
  * ULPH's M of a wall particle); either way it writes only its own sums.
  *
- * At every evaluation fluid_rows_filter keeps, in place of each segment, the
+ * At every evaluation fluid_rows_filter_row keeps, in place of each segment, the
  * candidates now within the support, with their squared distance in f for the scheme
  * to turn into its kernel's values in a loop of its own (no call, no branch: it
  * vectorises). The passes then walk only pairs, with neither a square root nor a branch
@@ -89,9 +89,5 @@ static inline void fluid_rows_filter_row(fluid_rows *r, double support2, const f
     r->boundary_end[i] = fluid_rows_filter_segment(r, support2, per, x, i, r->split[i],
                                                    r->offset[i + 1]);
 }
-
-/* Every row filtered: the pairs now closer than sqrt(support2), with f = r^2 (above). */
-void fluid_rows_filter(fluid_rows *r, double support2, const fsi_periodic *per,
-                       const fluid_particles *p);
 
 #endif

@@ -105,6 +105,21 @@ static inline void shape_add(double *restrict m, int *count, int *useful, double
     *useful += wv > 0.0 && r2 > 0.0;
 }
 
+/* x_IJ from I at x_i and |x_IJ|^2 (periodic: a constant in each copy). */
+static FSI_ALWAYS_INLINE double shape_pair_vector(const ulph_operators *ops, const double *x,
+                                                  const double *x_i, int j, double *rel,
+                                                  const int periodic)
+{
+    double r2 = 0.0;
+    for (int d = 0; d < FSI_DIM; d++)
+        rel[d] = x[j * FSI_DIM + d] - x_i[d];
+    if (periodic)
+        fsi_periodic_min_image(&ops->periodic, rel);
+    for (int d = 0; d < FSI_DIM; d++)
+        r2 += rel[d] * rel[d];
+    return r2;
+}
+
 /* The pairs of the particles of [lo, hi): I's sums in registers, J's (a fluid pair) in
  * place. periodic is a constant in each copy the compiler makes. */
 static FSI_ALWAYS_INLINE void shape_rows(ulph_operators *ops, const fluid_particles *p, int lo,
@@ -121,27 +136,23 @@ static FSI_ALWAYS_INLINE void shape_rows(ulph_operators *ops, const fluid_partic
             x_i[d] = x[i * FSI_DIM + d];
         const double vol_i = volume[i];
         int count = 0, useful = 0;
-        const int64_t fluid_end = r->fluid_end[i], split = r->split[i], end = r->boundary_end[i];
-        for (int64_t e = r->offset[i]; e < end; e++) {
-            if (e == fluid_end)
-                e = split; /* the fluid segment done, the boundary one */
-            if (e >= end)
-                break;
+        /* fluid segment: both particles */
+        for (int64_t e = r->offset[i]; e < r->fluid_end[i]; e++) {
+            double rel[FSI_DIM];
             const int j = pair[e];
-            double rel[FSI_DIM], r2 = 0.0;
-            for (int d = 0; d < FSI_DIM; d++)
-                rel[d] = x[j * FSI_DIM + d] - x_i[d];
-            if (periodic)
-                fsi_periodic_min_image(&ops->periodic, rel);
-            for (int d = 0; d < FSI_DIM; d++)
-                r2 += rel[d] * rel[d];
+            const double r2 = shape_pair_vector(ops, x, x_i, j, rel, periodic);
             shape_add(m, &count, &useful, w[e] * volume[j], rel, r2);
-            if (e < split) {
-                int c_j = 0, u_j = 0;
-                shape_add(&shape[(size_t)j * FSI_MAT_SIZE], &c_j, &u_j, w[e] * vol_i, rel, r2);
-                neighbours[j] += c_j;
-                informative[j] += u_j;
-            }
+            int c_j = 0, u_j = 0;
+            shape_add(&shape[(size_t)j * FSI_MAT_SIZE], &c_j, &u_j, w[e] * vol_i, rel, r2);
+            neighbours[j] += c_j;
+            informative[j] += u_j;
+        }
+        /* boundary segment (and a wall's or solid particle's own row): I only */
+        for (int64_t e = r->split[i]; e < r->boundary_end[i]; e++) {
+            double rel[FSI_DIM];
+            const int j = pair[e];
+            const double r2 = shape_pair_vector(ops, x, x_i, j, rel, periodic);
+            shape_add(m, &count, &useful, w[e] * volume[j], rel, r2);
         }
         for (int c = 0; c < FSI_MAT_SIZE; c++)
             shape[(size_t)i * FSI_MAT_SIZE + c] += m[c];
@@ -248,7 +259,7 @@ typedef struct {
     const fluid_particles *p;
     const double *field;        /* f[n] or u[n * FSI_DIM] */
     double *out;
-    int kind;                   /* 0: grad f, 1: B = sum w V A(u) (x) x, 2: div u */
+    int kind;                   /* OP_GRADIENT, OP_VECTOR_GRADIENT (B), OP_DIVERGENCE */
 } operator_context;
 
 enum { OP_GRADIENT, OP_VECTOR_GRADIENT, OP_DIVERGENCE };
