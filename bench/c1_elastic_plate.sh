@@ -8,7 +8,10 @@
 # Each spacing must divide the plate (0.012 x 0.08 m), the walls and the clamp (0.012
 # m); the water column is the nearest whole number of spacings to 0.146 m. Each run's
 # output is OUT/dxMM (log OUT/dxMM.txt); writes OUT/c1_elastic_plate.md (first peak of
-# every curve, wall time) and OUT/c1_elastic_plate.png (bench/c1_elastic_plate.py).
+# every curve, its NRMSE against the published curves' mean, wall time),
+# OUT/c1_elastic_plate.png (bench/c1_elastic_plate.py), and the accuracy against wall
+# time of the runs that reached 0.4 s: OUT/accuracy_speed.csv, OUT/c1_accuracy_speed.png
+# (bench/accuracy_speed.py).
 set -euo pipefail
 . "$(dirname "${BASH_SOURCE[0]}")/sweep.bash"
 sweep_parse c1_elastic_plate --dx "0.004 0.002" "$@"
@@ -24,6 +27,9 @@ for dx in $LIST; do
 done
 
 "$PY" "$ROOT/bench/c1_elastic_plate.py" --png "$OUT/c1_elastic_plate.png" \
-  --md "$OUT/c1_elastic_plate.md" "${DIRS[@]}"
+  --md "$OUT/c1_elastic_plate.md" --csv-out "$OUT/accuracy_speed.csv" "${DIRS[@]}"
 cat "$OUT/c1_elastic_plate.md"
-log "report: $OUT/c1_elastic_plate.md, plot: $OUT/c1_elastic_plate.png"
+"$PY" "$ROOT/bench/accuracy_speed.py" --title "C1 elastic plate: NRMSE of the corner's u_x against run time" \
+  --error-label "NRMSE of u_x against the published curves' mean" --png "$OUT/c1_accuracy_speed.png" \
+  "$OUT/accuracy_speed.csv"
+log "report: $OUT/c1_elastic_plate.md, plots: $OUT/c1_elastic_plate.png, $OUT/c1_accuracy_speed.png"
