@@ -9,6 +9,28 @@
 #include "small_tensor.h"
 #include "soft_contact.h"
 
+/* What a fluid pair reads of a particle, packed: two cache lines per neighbour in 2D
+ * (four in 3D) instead of a line from each of seven arrays; and what it adds to one,
+ * the force density and div v, in one line. */
+enum {
+    PK_A = 0,                          /* sigma M^-1 */
+    PK_MINV = PK_A + FSI_MAT_SIZE,     /* M^-1 */
+    PK_X = PK_MINV + FSI_MAT_SIZE,
+    PK_V = PK_X + FSI_DIM,
+    PK_VOL = PK_V + FSI_DIM,
+    PK_TR = PK_VOL + 1,                /* tr M */
+    PK_SIZE = (PK_TR + 1 + 7) / 8 * 8, /* whole lines */
+    SUM_DIV = FSI_DIM,
+    SUM_SIZE = 4
+};
+
+/* n doubles, 64-byte aligned, or NULL. */
+static double *alloc_lines(size_t n)
+{
+    const size_t bytes = (n * sizeof(double) + 63) / 64 * 64;
+    return aligned_alloc(64, bytes > 0 ? bytes : 64);
+}
+
 int ulph_momentum_reserve(ulph_momentum_scratch *s, int n)
 {
     if (n <= s->capacity)
@@ -17,7 +39,9 @@ int ulph_momentum_reserve(ulph_momentum_scratch *s, int n)
     const size_t m = (size_t)(n > 0 ? n : 1);
     s->velocity_gradient = malloc(m * FSI_MAT_SIZE * sizeof(double));
     s->stress_shape = malloc(m * FSI_MAT_SIZE * sizeof(double));
-    if (!s->velocity_gradient || !s->stress_shape) {
+    s->packed = alloc_lines(m * PK_SIZE);
+    s->sums = alloc_lines(m * SUM_SIZE);
+    if (!s->velocity_gradient || !s->stress_shape || !s->packed || !s->sums) {
         ulph_momentum_free(s);
         return -1;
     }
@@ -29,6 +53,8 @@ void ulph_momentum_free(ulph_momentum_scratch *s)
 {
     free(s->velocity_gradient);
     free(s->stress_shape);
+    free(s->packed);
+    free(s->sums);
     memset(s, 0, sizeof *s);
 }
 
@@ -56,7 +82,8 @@ typedef struct {
     const double *A;            /* sigma M^-1 per particle */
     double av, eps2, mu_laplacian;
     double contact_k_c2, spacing, contact_inv_eta_scale; /* soft_contact.h */
-    double *force, *divergence; /* the rates' accumulators (force density, div v) */
+    const double *packed;       /* the rates' packed copy (PK_*) */
+    double *sums;               /* their sums (force density, div v: SUM_*) */
 } pair_context;
 
 /* The force density on fluid particle I from boundary (wall or solid) particle J at
@@ -123,85 +150,84 @@ static FSI_ALWAYS_INLINE void rates_rows(const pair_context *c, int lo, int hi,
     const ulph_operators *ops = c->ops;
     const fluid_rows *rows = &ops->rows;
     const fluid_particles *p = c->p;
-    const double *restrict xs = p->x, *restrict vs = p->v, *restrict vol = p->volume;
-    const double *restrict A = c->A, *restrict shape = ops->shape;
-    const double *restrict shape_inv = ops->shape_inv, *restrict pair_w = rows->f;
+    const double *restrict pk = c->packed, *restrict pair_w = rows->f;
     const int32_t *restrict pair = rows->pair;
-    double *restrict force = c->force, *restrict div = c->divergence;
+    double *restrict sums = c->sums;
     const double av = c->av, eps2 = c->eps2, lap_scale = c->mu_laplacian * 4.0 * FSI_DIM;
     for (int i = lo; i < hi; i++) {
         if (!(p->flags[i] & FLUID_PARTICLE_FLUID))
             continue;
+        const double *pk_i = &pk[(size_t)i * PK_SIZE];
         double x_i[FSI_DIM], v_i[FSI_DIM], A_i[FSI_MAT_SIZE], Minv_i[FSI_MAT_SIZE];
         for (int d = 0; d < FSI_DIM; d++) {
-            x_i[d] = xs[i * FSI_DIM + d];
-            v_i[d] = vs[i * FSI_DIM + d];
+            x_i[d] = pk_i[PK_X + d];
+            v_i[d] = pk_i[PK_V + d];
         }
         for (int m = 0; m < FSI_MAT_SIZE; m++) {
-            A_i[m] = A[(size_t)i * FSI_MAT_SIZE + m];
-            Minv_i[m] = shape_inv[(size_t)i * FSI_MAT_SIZE + m];
+            A_i[m] = pk_i[PK_A + m];
+            Minv_i[m] = pk_i[PK_MINV + m];
         }
-        const double vol_i = vol[i], tr_i = fsi_mat_trace(&shape[(size_t)i * FSI_MAT_SIZE]);
+        const double vol_i = pk_i[PK_VOL], tr_i = pk_i[PK_TR];
         double f_i[FSI_DIM] = {0}, div_i = 0.0;
         const int64_t fluid_end = rows->fluid_end[i];
         for (int64_t e = rows->offset[i]; e < fluid_end; e++) {
             const int j = pair[e];
             const double w = pair_w[e];
-            const double *A_j = &A[(size_t)j * FSI_MAT_SIZE];
-            const double *Minv_j = &shape_inv[(size_t)j * FSI_MAT_SIZE];
+            const double *pk_j = &pk[(size_t)j * PK_SIZE];
+            double *sum_j = &sums[(size_t)j * SUM_SIZE];
             double rel[FSI_DIM], dv[FSI_DIM], r2 = 0.0, vx = 0.0;
             for (int d = 0; d < FSI_DIM; d++)
-                rel[d] = xs[j * FSI_DIM + d] - x_i[d];
+                rel[d] = pk_j[PK_X + d] - x_i[d];
             if (periodic)
                 fsi_periodic_min_image(&ops->periodic, rel);
             for (int d = 0; d < FSI_DIM; d++) {
                 r2 += rel[d] * rel[d];
-                dv[d] = vs[j * FSI_DIM + d] - v_i[d];
+                dv[d] = pk_j[PK_V + d] - v_i[d];
                 vx += dv[d] * rel[d];
             }
             double q[FSI_DIM], y_i[FSI_DIM], y_j[FSI_DIM];
             for (int a = 0; a < FSI_DIM; a++) {
                 double sq = 0.0, si = 0.0, sj = 0.0;
                 for (int b = 0; b < FSI_DIM; b++) {
-                    sq += (A_i[a * FSI_DIM + b] + A_j[a * FSI_DIM + b]) * rel[b];
+                    sq += (A_i[a * FSI_DIM + b] + pk_j[PK_A + a * FSI_DIM + b]) * rel[b];
                     si += Minv_i[a * FSI_DIM + b] * rel[b];
-                    sj += Minv_j[a * FSI_DIM + b] * rel[b];
+                    sj += pk_j[PK_MINV + a * FSI_DIM + b] * rel[b];
                 }
                 q[a] = w * sq;
                 y_i[a] = si;
                 y_j[a] = sj;
             }
             if (laplacian) {
-                const double tr_j = fsi_mat_trace(&shape[(size_t)j * FSI_MAT_SIZE]);
-                const double lap = lap_scale * w / (tr_i + tr_j);
+                const double lap = lap_scale * w / (tr_i + pk_j[PK_TR]);
                 for (int d = 0; d < FSI_DIM; d++)
                     q[d] += lap * dv[d];
             }
             /* 000 Eq. 27: only approaching pairs (a select, not a branch) */
             const double pi_w = w * av * (vx < 0.0 ? vx : 0.0) / (r2 + eps2);
-            const double vol_j = vol[j];
+            const double vol_j = pk_j[PK_VOL];
             double dvy_i = 0.0, dvy_j = 0.0;
             for (int d = 0; d < FSI_DIM; d++) {
                 f_i[d] += vol_j * (q[d] + pi_w * y_i[d]);
-                force[j * FSI_DIM + d] -= vol_i * (q[d] + pi_w * y_j[d]);
+                sum_j[d] -= vol_i * (q[d] + pi_w * y_j[d]);
                 dvy_i += dv[d] * y_i[d];
                 dvy_j += dv[d] * y_j[d];
             }
             div_i += w * vol_j * dvy_i;
-            div[j] += w * vol_i * dvy_j;
+            sum_j[SUM_DIV] += w * vol_i * dvy_j;
         }
         for (int64_t e = rows->split[i]; e < rows->boundary_end[i]; e++) {
             const int j = pair[e];
             double rel[FSI_DIM], out[FSI_DIM], d_div;
-            const double r2 = ulph_pair_vector(ops, xs, i, j, rel);
+            const double r2 = ulph_pair_vector(ops, p->x, i, j, rel);
             boundary_pair(c, i, j, rel, r2, pair_w[e], out, &d_div);
             for (int d = 0; d < FSI_DIM; d++)
                 f_i[d] += out[d];
             div_i += d_div;
         }
+        double *sum_i = &sums[(size_t)i * SUM_SIZE];
         for (int d = 0; d < FSI_DIM; d++)
-            force[i * FSI_DIM + d] += f_i[d];
-        div[i] += div_i;
+            sum_i[d] += f_i[d];
+        sum_i[SUM_DIV] += div_i;
     }
 }
 
@@ -237,18 +263,26 @@ void ulph_momentum_rates(const ulph_operators *ops, const ulph_momentum_params *
     const double mu_stress = prm->viscous_laplacian ? 0.0 : prm->viscosity;
     if (!prm->viscous_laplacian)
         ulph_gradient_vector(ops, p, velocity_for_viscosity, L);
+    double *restrict packed = scratch->packed, *restrict sums = scratch->sums;
 #pragma omp parallel for schedule(static) if (n >= FLUID_PARALLEL_MIN_PARTICLES)
     for (int i = 0; i < n; i++) {
         if (prm->viscous_laplacian)
             fsi_mat_zero(&L[(size_t)i * FSI_MAT_SIZE]);
         stress_shape(ops, p, mu_stress, &L[(size_t)i * FSI_MAT_SIZE], i,
                      &A[(size_t)i * FSI_MAT_SIZE]);
-        drho_dt[i] = 0.0; /* div v_I for now */
-        memset(&dv_dt[i * FSI_DIM], 0, FSI_DIM * sizeof *dv_dt); /* the force density */
+        double *pk = &packed[(size_t)i * PK_SIZE];
+        memcpy(pk + PK_A, &A[(size_t)i * FSI_MAT_SIZE], FSI_MAT_SIZE * sizeof *pk);
+        memcpy(pk + PK_MINV, &ops->shape_inv[(size_t)i * FSI_MAT_SIZE],
+               FSI_MAT_SIZE * sizeof *pk);
+        memcpy(pk + PK_X, &p->x[i * FSI_DIM], FSI_DIM * sizeof *pk);
+        memcpy(pk + PK_V, &p->v[i * FSI_DIM], FSI_DIM * sizeof *pk);
+        pk[PK_VOL] = p->volume[i];
+        pk[PK_TR] = fsi_mat_trace(&ops->shape[(size_t)i * FSI_MAT_SIZE]);
+        memset(&sums[(size_t)i * SUM_SIZE], 0, SUM_SIZE * sizeof *sums);
     }
     pair_context c = make_context(ops, prm, p, velocity_for_viscosity, A);
-    c.force = dv_dt;
-    c.divergence = drho_dt;
+    c.packed = packed;
+    c.sums = sums;
     ulph_for_blocks(ops, rates_block, &c);
 #pragma omp parallel for schedule(static) if (n >= FLUID_PARALLEL_MIN_PARTICLES)
     for (int i = 0; i < n; i++) {
@@ -258,9 +292,10 @@ void ulph_momentum_rates(const ulph_operators *ops, const ulph_momentum_params *
             memset(a_i, 0, FSI_DIM * sizeof *a_i);
             continue;
         }
-        drho_dt[i] = -p->density[i] * drho_dt[i];
+        const double *sum_i = &sums[(size_t)i * SUM_SIZE];
+        drho_dt[i] = -p->density[i] * sum_i[SUM_DIV];
         for (int d = 0; d < FSI_DIM; d++)
-            a_i[d] = a_i[d] / p->density[i] + prm->gravity[d];
+            a_i[d] = sum_i[d] / p->density[i] + prm->gravity[d];
     }
 }
 

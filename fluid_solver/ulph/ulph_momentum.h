@@ -18,10 +18,11 @@ typedef struct {
 } ulph_momentum_params;
 
 /* Scratch the rates need, n particles each: velocity gradient L (FSI_MAT_SIZE),
- * sigma M^-1 (FSI_MAT_SIZE). */
+ * sigma M^-1 (FSI_MAT_SIZE), and the packed copy and sums of ulph_momentum.c. */
 typedef struct {
     int capacity;
     double *velocity_gradient, *stress_shape;
+    double *packed, *sums;      /* 64-byte aligned */
 } ulph_momentum_scratch;
 
 int ulph_momentum_reserve(ulph_momentum_scratch *s, int n);
