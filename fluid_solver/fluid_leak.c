@@ -67,8 +67,10 @@ int fluid_leak_init(fluid_leak *l, const fluid_geometry *g, const fsi_periodic *
     if (l->n_walls == 0)
         return 0;
     l->wall = malloc((size_t)l->n_walls * sizeof *l->wall);
+    l->box_lo = malloc((size_t)l->n_walls * FSI_DIM * sizeof *l->box_lo);
+    l->box_hi = malloc((size_t)l->n_walls * FSI_DIM * sizeof *l->box_hi);
     l->side = calloc((size_t)(n > 0 ? n : 1) * (size_t)l->n_walls * FSI_DIM, 1);
-    if (!l->wall || !l->side) {
+    if (!l->wall || !l->box_lo || !l->box_hi || !l->side) {
         fluid_leak_free(l);
         return -1;
     }
@@ -84,33 +86,37 @@ int fluid_leak_check(fluid_leak *l, const fluid_particles *p, double t,
                      fluid_leak_crossing *found)
 {
     found->particle = -1;
-    const int n = l->n;
-    for (int w = 0; w < l->n_walls; w++) {
-        const fluid_box *b = &l->geometry->boxes[l->wall[w]];
-        double lo[FSI_DIM], hi[FSI_DIM];
-        wall_at(b, t, lo, hi);
-        /* Each particle's sides are its own; the first crossing (by wall, then index)
-         * is the one reported, on any number of threads: the smallest key
-         * 8 i + 2 axis + upward. */
-        const long long none = 8LL * n;
-        long long first = none;
+    const int n = l->n, n_walls = l->n_walls;
+    if (n_walls == 0)
+        return 0;
+    double *lo = l->box_lo, *hi = l->box_hi;
+    for (int w = 0; w < n_walls; w++)
+        wall_at(&l->geometry->boxes[l->wall[w]], t, &lo[w * FSI_DIM], &hi[w * FSI_DIM]);
+    /* One pass over the particles, every wall at each (its sides are its own). The
+     * first crossing (by wall, then index) is the one reported, on any number of
+     * threads: the smallest key 8 (w n + i) + 2 axis + upward. */
+    const long long none = 8LL * n_walls * n;
+    long long first = none;
 #pragma omp parallel for schedule(static) reduction(min : first) \
     if (n >= FLUID_PARALLEL_MIN_PARTICLES)
-        for (int i = 0; i < n; i++) {
-            if (!(p->flags[i] & FLUID_PARTICLE_FLUID))
-                continue;
-            unsigned char *side = &l->side[((size_t)i * l->n_walls + w) * FSI_DIM];
+    for (int i = 0; i < n; i++) {
+        if (!(p->flags[i] & FLUID_PARTICLE_FLUID))
+            continue;
+        for (int w = 0; w < n_walls; w++) {
+            unsigned char *side = &l->side[((size_t)i * n_walls + w) * FSI_DIM];
             int upward = 0;
-            const int d = update_sides(l, lo, hi, &p->x[i * FSI_DIM], side, &upward);
-            const long long key = 8LL * i + 2 * d + upward;
+            const int d = update_sides(l, &lo[w * FSI_DIM], &hi[w * FSI_DIM],
+                                       &p->x[i * FSI_DIM], side, &upward);
+            const long long key = 8LL * ((long long)w * n + i) + 2 * d + upward;
             if (d >= 0 && key < first)
                 first = key;
         }
-        if (first < none && found->particle < 0) {
-            const int d = (int)(first % 8) / 2, upward = (int)(first % 2);
-            *found = (fluid_leak_crossing){(int)(first / 8), l->wall[w], d, upward,
-                                           upward ? hi[d] : lo[d]};
-        }
+    }
+    if (first < none) {
+        const long long wi = first / 8;
+        const int w = (int)(wi / n), d = (int)(first % 8) / 2, upward = (int)(first % 2);
+        *found = (fluid_leak_crossing){(int)(wi % n), l->wall[w], d, upward,
+                                       upward ? hi[w * FSI_DIM + d] : lo[w * FSI_DIM + d]};
     }
     return found->particle >= 0;
 }
@@ -133,6 +139,8 @@ int fluid_leak_reorder(fluid_leak *l, const int *sorted)
 void fluid_leak_free(fluid_leak *l)
 {
     free(l->wall);
+    free(l->box_lo);
+    free(l->box_hi);
     free(l->side);
     memset(l, 0, sizeof *l);
 }

@@ -28,6 +28,7 @@ typedef struct {
     const fluid_geometry *geometry;     /* the walls (not owned) */
     int n_walls;
     int *wall;                  /* the walls' indices in geometry->boxes */
+    double *box_lo, *box_hi;    /* where they are at the last check */
     int periodic[FSI_DIM];
     double tolerance;           /* how far past a wall counts [m] */
     int n;                      /* particles the side table covers */

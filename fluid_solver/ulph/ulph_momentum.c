@@ -270,6 +270,9 @@ void ulph_momentum_rates(const ulph_operators *ops, const ulph_momentum_params *
             fsi_mat_zero(&L[(size_t)i * FSI_MAT_SIZE]);
         stress_shape(ops, p, mu_stress, &L[(size_t)i * FSI_MAT_SIZE], i,
                      &A[(size_t)i * FSI_MAT_SIZE]);
+        memset(&sums[(size_t)i * SUM_SIZE], 0, SUM_SIZE * sizeof *sums);
+        if (!(p->flags[i] & FLUID_PARTICLE_FLUID))
+            continue; /* only fluid pairs read the packed copy */
         double *pk = &packed[(size_t)i * PK_SIZE];
         memcpy(pk + PK_A, &A[(size_t)i * FSI_MAT_SIZE], FSI_MAT_SIZE * sizeof *pk);
         memcpy(pk + PK_MINV, &ops->shape_inv[(size_t)i * FSI_MAT_SIZE],
@@ -278,7 +281,6 @@ void ulph_momentum_rates(const ulph_operators *ops, const ulph_momentum_params *
         memcpy(pk + PK_V, &p->v[i * FSI_DIM], FSI_DIM * sizeof *pk);
         pk[PK_VOL] = p->volume[i];
         pk[PK_TR] = fsi_mat_trace(&ops->shape[(size_t)i * FSI_MAT_SIZE]);
-        memset(&sums[(size_t)i * SUM_SIZE], 0, SUM_SIZE * sizeof *sums);
     }
     pair_context c = make_context(ops, prm, p, velocity_for_viscosity, A);
     c.packed = packed;
