@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "always_inline.h"
+#include "cache_lines.h"
 #include "small_tensor.h"
 #include "soft_contact.h"
 
@@ -24,13 +25,6 @@ enum {
     SUM_SIZE = 4
 };
 
-/* n doubles, 64-byte aligned, or NULL. */
-static double *alloc_lines(size_t n)
-{
-    const size_t bytes = (n * sizeof(double) + 63) / 64 * 64;
-    return aligned_alloc(64, bytes > 0 ? bytes : 64);
-}
-
 int ulph_momentum_reserve(ulph_momentum_scratch *s, int n)
 {
     if (n <= s->capacity)
@@ -39,8 +33,8 @@ int ulph_momentum_reserve(ulph_momentum_scratch *s, int n)
     const size_t m = (size_t)(n > 0 ? n : 1);
     s->velocity_gradient = malloc(m * FSI_MAT_SIZE * sizeof(double));
     s->stress_shape = malloc(m * FSI_MAT_SIZE * sizeof(double));
-    s->packed = alloc_lines(m * PK_SIZE);
-    s->sums = alloc_lines(m * SUM_SIZE);
+    s->packed = fsi_alloc_lines(m * PK_SIZE);
+    s->sums = fsi_alloc_lines(m * SUM_SIZE);
     if (!s->velocity_gradient || !s->stress_shape || !s->packed || !s->sums) {
         ulph_momentum_free(s);
         return -1;
