@@ -11,8 +11,11 @@
  * particle is far from even: fluid particles come first, wall particles last, and
  * idle walls (verlet_list.h) and most walls' loops do almost nothing, so a static split
  * in halves left one thread with nearly all of it; chunks also let a thread that keeps
- * its core take over from one that lost it to another job. Every particle's results
- * are computed alone, so they do not depend on which thread takes it. */
-#define FLUID_CHUNK 64
+ * its core take over from one that lost it to another job. Not smaller: where two
+ * chunks meet, their per-particle arrays share cache lines that two threads write (the
+ * rows' ends, flags, shape tensors), and with 64 particles a chunk those lines were
+ * what kept the operators phase from scaling (docs/performance.md). Every particle's
+ * results are computed alone, so they do not depend on which thread takes it. */
+#define FLUID_CHUNK 512
 
 #endif
