@@ -15,6 +15,7 @@ def main():
     ap.add_argument("--title", required=True)
     ap.add_argument("--error-label", required=True)
     ap.add_argument("--goal", type=float, default=None, help="error goal, drawn as a line")
+    ap.add_argument("--goal-label", default="goal", help="the goal line's legend")
     ap.add_argument("--png", required=True)
     ap.add_argument("csvs", nargs="+")
     a = ap.parse_args()
@@ -36,7 +37,7 @@ def main():
             ax.annotate(r["resolution"], (tt, ee), textcoords="offset points", xytext=(4, 4),
                         fontsize=8)
     if a.goal is not None:
-        ax.axhline(100 * a.goal, color="k", ls="--", lw=1, label="goal")
+        ax.axhline(100 * a.goal, color="k", ls="--", lw=1, label=a.goal_label)
     ax.set_xscale("log")
     ax.set_xlabel("wall-clock time [s] (threads as in the table)")
     ax.set_ylabel(a.error_label + " [%]")

@@ -12,8 +12,8 @@
 # OUT/f1_accuracy_speed.png (bench/accuracy_speed.py). --resume keeps the
 # runs of OUT that finished; --report runs nothing and compares the runs in OUT (finished
 # or not). --set is passed to every run (e.g. fluid.sound_speed=...).
-# Default N = 15 20 30 on 2 threads (with cfl_acoustic = 0.1: a / 20 about 4 min, a / 30
-# about 15 min).
+# Default N = 15 20 30 on 2 threads (ULPH at the case's settings, 1 thread on an idle
+# machine: a / 20 about 22 s, a / 30 about 70 s).
 set -euo pipefail
 . "$(dirname "${BASH_SOURCE[0]}")/sweep.bash"
 sweep_parse f1_dam_break --n "15 20 30" "$@"
