@@ -11,7 +11,7 @@
 #include "soft_contact.h"
 
 /* What a fluid pair reads of a particle, packed: two cache lines per neighbour in 2D
- * (four in 3D) instead of a line from each of seven arrays; and what it adds to one,
+ * (four in 3D) instead of a line from each of six arrays; and what it adds to one,
  * the force density and div v, in one line. */
 enum {
     PK_A = 0,                          /* sigma M^-1 */

@@ -336,8 +336,10 @@ static void check_linear(void)
     CHECK(err_l < 1e-12, "linear u: L off by %g", err_l);
     CHECK(err_div < 1e-12, "linear u: divergence off by %g", err_div);
     CHECK(err_trace < 1e-12, "div u differs from tr L by %g", err_trace);
-    /* The default bound keeps a factor of 20 above any jittered family. */
-    CHECK(max_cond * 20.0 < ULPH_MAX_CONDITION_M, "a lattice family has |M| |M^-1| = %g",
+    /* The default bound keeps a factor of 20 above any jittered family in 2D (3.2 there)
+     * and of 10 in 3D (6.4: a 3 x 3 M has |M| |M^-1| >= 3, a lattice's is 3). */
+    const double margin = FSI_DIM == 2 ? 20.0 : 10.0;
+    CHECK(max_cond * margin < ULPH_MAX_CONDITION_M, "a lattice family has |M| |M^-1| = %g",
           max_cond);
     fields_free(&fld);
     ulph_operators_free(&ops);
