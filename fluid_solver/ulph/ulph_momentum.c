@@ -264,9 +264,9 @@ void ulph_momentum_rates(const ulph_operators *ops, const ulph_momentum_params *
             fsi_mat_zero(&L[(size_t)i * FSI_MAT_SIZE]);
         stress_shape(ops, p, mu_stress, &L[(size_t)i * FSI_MAT_SIZE], i,
                      &A[(size_t)i * FSI_MAT_SIZE]);
-        memset(&sums[(size_t)i * SUM_SIZE], 0, SUM_SIZE * sizeof *sums);
         if (!(p->flags[i] & FLUID_PARTICLE_FLUID))
-            continue; /* only fluid pairs read the packed copy */
+            continue; /* only fluid pairs read the packed copy and write the sums */
+        memset(&sums[(size_t)i * SUM_SIZE], 0, SUM_SIZE * sizeof *sums);
         double *pk = &packed[(size_t)i * PK_SIZE];
         memcpy(pk + PK_A, &A[(size_t)i * FSI_MAT_SIZE], FSI_MAT_SIZE * sizeof *pk);
         memcpy(pk + PK_MINV, &ops->shape_inv[(size_t)i * FSI_MAT_SIZE],

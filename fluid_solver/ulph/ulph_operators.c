@@ -93,66 +93,50 @@ typedef struct {
     const fluid_particles *p;
 } shape_context;
 
-/* One pair's share of M (000 Eq. 15): wv V x_IJ (x) x_IJ into m (x_JI (x) x_JI is the
- * same), and of the counts. */
-static inline void shape_add(double *restrict m, int *count, int *useful, double wv,
-                             const double *rel, double r2)
+/* Whether a pair informs M (000 Eq. 15): a weight w V > 0 at a non-zero distance. */
+static inline int informs(double wv, double r2)
 {
-    for (int a = 0; a < FSI_DIM; a++)
-        for (int b = 0; b < FSI_DIM; b++)
-            m[a * FSI_DIM + b] += wv * rel[a] * rel[b];
-    ++*count;
-    *useful += wv > 0.0 && r2 > 0.0;
+    return wv > 0.0 && r2 > 0.0;
 }
 
-/* x_IJ from I at x_i and |x_IJ|^2 (periodic: a constant in each copy). */
-static FSI_ALWAYS_INLINE double shape_pair_vector(const ulph_operators *ops, const double *x,
-                                                  const double *x_i, int j, double *rel,
-                                                  const int periodic)
-{
-    double r2 = 0.0;
-    for (int d = 0; d < FSI_DIM; d++)
-        rel[d] = x[j * FSI_DIM + d] - x_i[d];
-    if (periodic)
-        fsi_periodic_min_image(&ops->periodic, rel);
-    for (int d = 0; d < FSI_DIM; d++)
-        r2 += rel[d] * rel[d];
-    return r2;
-}
-
-/* The pairs of the particles of [lo, hi): I's sums in registers, J's (a fluid pair) in
- * place. periodic is a constant in each copy the compiler makes. */
+/* The pairs of the particles of [lo, hi): M's shares w V x_IJ (x) x_IJ (x_JI (x) x_JI is
+ * the same), I's sums in registers, J's (a fluid pair) in place. periodic is a constant
+ * in each copy the compiler makes. */
 static FSI_ALWAYS_INLINE void shape_rows(ulph_operators *ops, const fluid_particles *p, int lo,
                                          int hi, const int periodic)
 {
     const fluid_rows *r = &ops->rows;
+    const fsi_periodic *per = periodic ? &ops->periodic : NULL;
     const double *restrict x = p->x, *restrict volume = p->volume, *restrict w = r->f;
     const int32_t *restrict pair = r->pair;
     double *restrict shape = ops->shape;
     int32_t *restrict neighbours = ops->neighbours, *restrict informative = ops->informative;
     for (int i = lo; i < hi; i++) {
-        double m[FSI_MAT_SIZE] = {0}, x_i[FSI_DIM];
-        for (int d = 0; d < FSI_DIM; d++)
-            x_i[d] = x[i * FSI_DIM + d];
+        double m[FSI_MAT_SIZE] = {0};
         const double vol_i = volume[i];
         int count = 0, useful = 0;
         /* fluid segment: both particles */
         for (int64_t e = r->offset[i]; e < r->fluid_end[i]; e++) {
             double rel[FSI_DIM];
             const int j = pair[e];
-            const double r2 = shape_pair_vector(ops, x, x_i, j, rel, periodic);
-            shape_add(m, &count, &useful, w[e] * volume[j], rel, r2);
-            int c_j = 0, u_j = 0;
-            shape_add(&shape[(size_t)j * FSI_MAT_SIZE], &c_j, &u_j, w[e] * vol_i, rel, r2);
-            neighbours[j] += c_j;
-            informative[j] += u_j;
+            const double r2 = fluid_pair_vector_r2(per, x, i, j, rel);
+            const double wv_i = w[e] * volume[j], wv_j = w[e] * vol_i;
+            fsi_mat_add_outer(m, wv_i, rel, rel);
+            fsi_mat_add_outer(&shape[(size_t)j * FSI_MAT_SIZE], wv_j, rel, rel);
+            count++;
+            useful += informs(wv_i, r2);
+            neighbours[j]++;
+            informative[j] += informs(wv_j, r2);
         }
         /* boundary segment (and a wall's or solid particle's own row): I only */
         for (int64_t e = r->split[i]; e < r->boundary_end[i]; e++) {
             double rel[FSI_DIM];
             const int j = pair[e];
-            const double r2 = shape_pair_vector(ops, x, x_i, j, rel, periodic);
-            shape_add(m, &count, &useful, w[e] * volume[j], rel, r2);
+            const double r2 = fluid_pair_vector_r2(per, x, i, j, rel);
+            const double wv_i = w[e] * volume[j];
+            fsi_mat_add_outer(m, wv_i, rel, rel);
+            count++;
+            useful += informs(wv_i, r2);
         }
         for (int c = 0; c < FSI_MAT_SIZE; c++)
             shape[(size_t)i * FSI_MAT_SIZE + c] += m[c];
