@@ -38,6 +38,7 @@
 #include "neighbour_grid.h"
 #include "participant.h"
 #include "particle_health.h"
+#include "permute_rows.h"
 #include "small_tensor.h"
 #include "timers.h"
 
@@ -256,14 +257,6 @@ static int reserve_run_arrays(fluid_run *s)
 }
 
 /* a[k] = old a[sorted[k]] for the n rows of width bytes; scratch holds n rows. */
-static void permute_rows(void *a, const int *sorted, int n, size_t width, void *scratch)
-{
-    unsigned char *src = a, *dst = scratch;
-    for (int k = 0; k < n; k++)
-        memcpy(dst + (size_t)k * width, src + (size_t)sorted[k] * width, width);
-    memcpy(a, scratch, (size_t)n * width);
-}
-
 /* Sorts the fluid and wall particles by cell (the neighbour grid's counting sort) so
  * that the neighbours of a particle sit close in memory: a flow mixes the initial
  * lattice order, and the pair loops then jump across the arrays. Everything indexed by
@@ -294,21 +287,21 @@ static int reorder_particles(fluid_run *s)
         return -1;
     }
     const size_t vec = FSI_DIM * sizeof(double);
-    permute_rows(p->id, sorted, n, sizeof *p->id, scratch);
-    permute_rows(p->x, sorted, n, vec, scratch);
-    permute_rows(p->v, sorted, n, vec, scratch);
-    permute_rows(p->mass, sorted, n, sizeof *p->mass, scratch);
-    permute_rows(p->volume, sorted, n, sizeof *p->volume, scratch);
-    permute_rows(p->density, sorted, n, sizeof *p->density, scratch);
-    permute_rows(p->pressure, sorted, n, sizeof *p->pressure, scratch);
-    permute_rows(p->boundary_acceleration, sorted, n, vec, scratch);
-    permute_rows(p->flags, sorted, n, sizeof *p->flags, scratch);
-    permute_rows(s->free_slip, sorted, n, sizeof *s->free_slip, scratch);
-    permute_rows(s->order, sorted, n, sizeof *s->order, scratch);
+    fsi_permute_rows(p->id, sorted, n, sizeof *p->id, scratch);
+    fsi_permute_rows(p->x, sorted, n, vec, scratch);
+    fsi_permute_rows(p->v, sorted, n, vec, scratch);
+    fsi_permute_rows(p->mass, sorted, n, sizeof *p->mass, scratch);
+    fsi_permute_rows(p->volume, sorted, n, sizeof *p->volume, scratch);
+    fsi_permute_rows(p->density, sorted, n, sizeof *p->density, scratch);
+    fsi_permute_rows(p->pressure, sorted, n, sizeof *p->pressure, scratch);
+    fsi_permute_rows(p->boundary_acceleration, sorted, n, vec, scratch);
+    fsi_permute_rows(p->flags, sorted, n, sizeof *p->flags, scratch);
+    fsi_permute_rows(s->free_slip, sorted, n, sizeof *s->free_slip, scratch);
+    fsi_permute_rows(s->order, sorted, n, sizeof *s->order, scratch);
     for (int k = 0; k < n; k++)
         inverse[sorted[k]] = k;
     fluid_wall_motion_renumber(&s->motion, inverse);
-    fluid_scheme_particles_reordered(s->scheme);
+    fluid_scheme_particles_reordered(s->scheme, sorted, n, scratch);
     free(scratch);
     free(inverse);
     fsi_grid_free(&grid);

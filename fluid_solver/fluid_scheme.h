@@ -115,10 +115,12 @@ int fluid_scheme_write_fields(const fluid_scheme *s, fsi_h5_writer *out);
  * loop's "rates" phase; t must outlive the scheme. NULL stops it. */
 void fluid_scheme_use_timers(fluid_scheme *s, fsi_timers *t);
 
-/* The main loop permuted the particles (fluid_main.c, order for locality): state the
- * scheme keeps by particle index between calls (e.g. candidate neighbour lists) must
- * be rebuilt. */
-void fluid_scheme_particles_reordered(fluid_scheme *s);
+/* The main loop permuted the first n particles (fluid_main.c, order for locality): the
+ * particle now at k was at sorted[k]. State the scheme keeps by particle index between
+ * calls follows: candidate neighbour lists are rebuilt, an integrator's previous state
+ * is permuted the same way (so that sorting changes only the order of sums). scratch
+ * holds n * FSI_DIM doubles. */
+void fluid_scheme_particles_reordered(fluid_scheme *s, const int *sorted, int n, void *scratch);
 
 /* Pairs per particle of the last neighbour list (for the performance line). */
 long long fluid_scheme_pair_count(const fluid_scheme *s);

@@ -7,6 +7,7 @@
 
 #include "fluid_parallel.h"
 #include "grow.h"
+#include "permute_rows.h"
 
 void fluid_wc_verlet_init(fluid_wc_verlet *in, long euler_interval)
 {
@@ -17,6 +18,14 @@ void fluid_wc_verlet_init(fluid_wc_verlet *in, long euler_interval)
 void fluid_wc_verlet_restart(fluid_wc_verlet *in)
 {
     in->have_prev = 0;
+}
+
+void fluid_wc_verlet_permute(fluid_wc_verlet *in, const int *sorted, int n, void *scratch)
+{
+    if (!in->have_prev)
+        return;
+    fsi_permute_rows(in->v_prev, sorted, n, FSI_DIM * sizeof(double), scratch);
+    fsi_permute_rows(in->rho_prev, sorted, n, sizeof(double), scratch);
 }
 
 void fluid_wc_verlet_free(fluid_wc_verlet *in)

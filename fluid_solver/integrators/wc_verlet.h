@@ -8,10 +8,11 @@
  *     rho^{n+1} = rho^{n-1} + (dt_{n-1} + dt_n) R^n
  *
  * (the leapfrog over two steps; dt_{n-1} + dt_n is 2 dt of the constant-step form),
- * and every euler_interval-th step, the first one and the first after the particles
- * were permuted, the same with v^n and rho^n for v^{n-1}, rho^{n-1} and dt_n for the
- * sum, which ties the even and odd sequences together again (DualSPHysics: every 40
- * steps). Only fluid particles move. */
+ * and every euler_interval-th step and the first one, the same with v^n and rho^n for
+ * v^{n-1}, rho^{n-1} and dt_n for the sum, which ties the even and odd sequences
+ * together again (DualSPHysics: every 40 steps). When the main loop permutes the
+ * particles, v^{n-1} and rho^{n-1} are permuted with them and the sequence goes on:
+ * sorting changes only the order of sums. Only fluid particles move. */
 #ifndef FSI_WC_VERLET_H
 #define FSI_WC_VERLET_H
 
@@ -31,8 +32,13 @@ typedef struct {
 /* Empty, with the given interval (at least 1). */
 void fluid_wc_verlet_init(fluid_wc_verlet *in, long euler_interval);
 
-/* The next step restarts the sequence (the particles were permuted). */
+/* The next step restarts the sequence (the state of v^{n-1}, rho^{n-1} no longer
+ * belongs to the step's start: e.g. after a density filter). */
 void fluid_wc_verlet_restart(fluid_wc_verlet *in);
+
+/* The first n particles were permuted: row k is now old row sorted[k] (scratch holds
+ * n * FSI_DIM doubles). */
+void fluid_wc_verlet_permute(fluid_wc_verlet *in, const int *sorted, int n, void *scratch);
 
 /* One step of dt from time t with the start rates in hooks->drho, hooks->accel; calls
  * hooks->loads with dt (the loads of the step are those of its start). 0, or -1

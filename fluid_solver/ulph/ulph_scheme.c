@@ -63,10 +63,10 @@ void fluid_scheme_use_timers(fluid_scheme *s, fsi_timers *t)
         s->phase[k] = fsi_timer_index(t, phase_name[k]);
 }
 
-void fluid_scheme_particles_reordered(fluid_scheme *s)
+void fluid_scheme_particles_reordered(fluid_scheme *s, const int *sorted, int n, void *scratch)
 {
     fluid_verlet_invalidate(&s->list);
-    fluid_wc_verlet_restart(&s->verlet_integrator);
+    fluid_wc_verlet_permute(&s->verlet_integrator, sorted, n, scratch);
 }
 
 static void phase_start(fluid_scheme *s, int phase)

@@ -67,10 +67,10 @@ static void phase(fluid_scheme *s, int which, int start)
         fsi_timer_stop(s->timers, s->phase[which]);
 }
 
-void fluid_scheme_particles_reordered(fluid_scheme *s)
+void fluid_scheme_particles_reordered(fluid_scheme *s, const int *sorted, int n, void *scratch)
 {
     fluid_verlet_invalidate(&s->list);
-    fluid_wc_verlet_restart(&s->verlet_integrator);
+    fluid_wc_verlet_permute(&s->verlet_integrator, sorted, n, scratch);
 }
 
 static int reserve(fluid_scheme *s, int n)

@@ -788,7 +788,9 @@ static void test_order(void)
     /* The scheme keeps s's free-slip array: same values, and s keeps its memory. Its
      * particle arrays are passed anew at every call. */
     memcpy(s.free_slip, r.free_slip, (size_t)n);
-    fluid_scheme_particles_reordered(f);
+    double *scratch = malloc((size_t)n * FSI_DIM * sizeof *scratch);
+    fluid_scheme_particles_reordered(f, perm, n, scratch);
+    free(scratch);
     rates(f, &r, drho_q, acc_q);
     double worst = 0.0, scale = 0.0, worst_rho = 0.0, scale_rho = 0.0;
     for (int k = 0; k < n; k++) {
