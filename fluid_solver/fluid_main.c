@@ -256,7 +256,6 @@ static int reserve_run_arrays(fluid_run *s)
     return 0;
 }
 
-/* a[k] = old a[sorted[k]] for the n rows of width bytes; scratch holds n rows. */
 /* Sorts the fluid and wall particles by cell (the neighbour grid's counting sort) so
  * that the neighbours of a particle sit close in memory: a flow mixes the initial
  * lattice order, and the pair loops then jump across the arrays. Everything indexed by
