@@ -74,6 +74,7 @@ static void gather_force(const solid_model *m, const solid_particles *p, const d
             f[a] += fr * (vv * t - central * r[a]);
         }
     }
+    ps_hourglass_force(m, p, i, f);
     for (int d = 0; d < FSI_DIM; d++)
         force[(int64_t)i * FSI_DIM + d] = f[d];
 }
@@ -116,6 +117,7 @@ int solid_model_internal_force(solid_model *m, const solid_particles *p, const d
 #pragma omp parallel for schedule(static) if (parallel) reduction(+ : warn)
     for (int i = 0; i < n; i++) {
         ps_gather_factors(m, p, i);
+        ps_hourglass_factors(m, p, i);
         warn += (m->flags[i] & (PS_POINT_REGULARISED | PS_POINT_DETACHED)) &&
                 !(m->flags[i] & PS_POINT_WARNED);
     }

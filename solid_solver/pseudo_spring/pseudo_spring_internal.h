@@ -34,13 +34,14 @@ struct solid_model {
     double w_dx;                /* W(dx), the artificial stress's reference */
     double visc_alpha, visc_beta;       /* beta_1, beta_2 of 004 Eq. 8 */
     double art_stress, art_exponent;    /* gamma and n of 004 Eq. 16 */
+    double hg_coefficient;      /* hourglass_control: E_i in units of G V0 eps_na^2 */
     int failure;
     double failure_strain;      /* 0 when failure is off */
     double courant;
     double sound_speed;         /* sqrt(M / rho0), the largest over the points [m/s] */
     int full_count;             /* links of a point deep inside the lattice */
 
-    solid_bonds links;          /* immediate neighbours; weight = V0_J (unused) */
+    solid_bonds links;          /* immediate neighbours; weight = w_iJ of the hourglass control */
 
     /* Per point. */
     double *mass;               /* rho0 V0 [kg/m^(3-DIM)...] */
@@ -53,6 +54,9 @@ struct solid_model {
     /* Per point, for the force gather: D = lambda_z sigma B (FSI_DIM x FSI_DIM, B the
      * correction of the current configuration) and R = gamma |P_r| / rho^2. */
     double *gather;             /* PS_GATHER_STRIDE each */
+    /* Per point, for the hourglass control (pseudo_spring_hourglass.c): the affine
+     * fit F_i of the neighbourhood on the reference lattice and kappa_i (0: none). */
+    double *hourglass;          /* PS_HOURGLASS_STRIDE each */
     double *damage;             /* D_i = broken / initial links */
     int32_t *initial_count, *intact_count;
     uint8_t *flags;             /* PS_POINT_* */
@@ -63,6 +67,7 @@ struct solid_model {
 };
 
 #define PS_GATHER_STRIDE (FSI_MAT_SIZE + 1)
+#define PS_HOURGLASS_STRIDE (FSI_MAT_SIZE + 1)
 
 /* Position of point j in the configuration of a pass: the current one (x_prev NULL)
  * or the mid-point one (x + x_prev) / 2. */
@@ -103,6 +108,15 @@ int ps_update_point(solid_model *m, const solid_particles *p, const double *x_pr
 
 /* Pass 1b for point i, after every density is updated: D_i and R_i into gather. */
 void ps_gather_factors(solid_model *m, const solid_particles *p, int i);
+
+/* Hourglass control (pseudo_spring_hourglass.c): F_i and kappa_i of the current
+ * positions into m->hourglass (pass 2); adds the control's force on point k to f
+ * (pass 3, after every point's factors); point i's stored energy E_i at the current
+ * positions. */
+void ps_hourglass_weights(solid_model *m, const solid_particles *p);   /* at creation */
+void ps_hourglass_factors(solid_model *m, const solid_particles *p, int i);
+void ps_hourglass_force(const solid_model *m, const solid_particles *p, int k, double *f);
+double ps_hourglass_energy(const solid_model *m, const solid_particles *p, int i);
 
 /* Prints "pseudo_spring: warning: ..." about point i once (flag PS_POINT_WARNED), up
  * to PS_MAX_WARNINGS lines per model. */

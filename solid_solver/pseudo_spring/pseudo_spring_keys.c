@@ -35,6 +35,11 @@ static const fsi_key_spec keys[] = {
      "C of the stable step C h / (c + |v|max), c = sqrt((K + 4 G / 3) / rho) the P-wave "
      "speed, and never above the lattice bound dx / c (both before the main loop's "
      "time_step_safety)."},
+    {"hourglass_control", FSI_KEY_REAL, "-", "1", FSI_BOUND_MIN | FSI_BOUND_MAX, 0, 10, NULL,
+     "Energy of the non-affine part of each point's neighbourhood motion (the zero-energy "
+     "modes of the immediate-neighbour stencil, docs/pseudo_spring.md), in units of the "
+     "material's own price 2 G for a strain of that size: 1 prices it as a deviatoric "
+     "strain, 0 switches the control off (004's scheme as printed)."},
 };
 
 const fsi_key_table fsi_pseudo_spring_keys = {

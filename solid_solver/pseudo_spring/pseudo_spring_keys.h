@@ -8,7 +8,7 @@
 
 /* smoothing_length_factor, artificial_viscosity_alpha, artificial_viscosity_beta,
  * artificial_stress, artificial_stress_exponent, failure, failure_strain,
- * courant_number. */
+ * courant_number, hourglass_control. */
 extern const fsi_key_table fsi_pseudo_spring_keys;
 
 /* Defaults, shared with solid_model_create's fallbacks for unvalidated cases. */
@@ -18,5 +18,6 @@ extern const fsi_key_table fsi_pseudo_spring_keys;
 #define PSEUDO_SPRING_DEFAULT_ART_STRESS 0.3    /* 004 §5.2: gamma = 0.3 */
 #define PSEUDO_SPRING_DEFAULT_FAILURE_STRAIN 0.05       /* 004 §5.5 */
 #define PSEUDO_SPRING_DEFAULT_COURANT 0.4
+#define PSEUDO_SPRING_DEFAULT_HOURGLASS 1.0     /* the material's own 2 G: not a fit */
 
 #endif

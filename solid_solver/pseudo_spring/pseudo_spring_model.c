@@ -24,6 +24,7 @@ void solid_model_free(solid_model *m)
     free(m->work);
     free(m->thickness_stretch);
     free(m->gather);
+    free(m->hourglass);
     free(m->damage);
     free(m->initial_count);
     free(m->intact_count);
@@ -51,14 +52,18 @@ static int read_keys(solid_model *m, const fsi_case *c, char *msg, size_t msg_si
     m->failure_strain = fsi_case_get_real(c, own, "failure_strain",
                                           PSEUDO_SPRING_DEFAULT_FAILURE_STRAIN);
     m->courant = fsi_case_get_real(c, own, "courant_number", PSEUDO_SPRING_DEFAULT_COURANT);
+    m->hg_coefficient = fsi_case_get_real(c, own, "hourglass_control",
+                                          PSEUDO_SPRING_DEFAULT_HOURGLASS);
     if (!(factor >= 1.0 && factor <= 3.0) || !(m->visc_alpha >= 0.0) ||
         !(m->visc_beta >= 0.0) || !(m->art_stress >= 0.0) || !(m->art_exponent >= 0.0) ||
-        !(m->failure_strain > 0.0) || !(m->courant > 0.0 && m->courant <= 1.0)) {
+        !(m->failure_strain > 0.0) || !(m->courant > 0.0 && m->courant <= 1.0) ||
+        !(m->hg_coefficient >= 0.0 && m->hg_coefficient <= 10.0)) {
         snprintf(msg, msg_size, "[solid.pseudo_spring] a key is out of range "
                  "(smoothing_length_factor %g, artificial_viscosity_alpha %g, beta %g, "
-                 "artificial_stress %g, exponent %g, failure_strain %g, courant_number %g; "
-                 "docs/cases.md has the ranges)", factor, m->visc_alpha, m->visc_beta,
-                 m->art_stress, m->art_exponent, m->failure_strain, m->courant);
+                 "artificial_stress %g, exponent %g, failure_strain %g, courant_number %g, "
+                 "hourglass_control %g; docs/cases.md has the ranges)", factor, m->visc_alpha,
+                 m->visc_beta, m->art_stress, m->art_exponent, m->failure_strain, m->courant,
+                 m->hg_coefficient);
         return -1;
     }
     if (!m->failure)
@@ -119,6 +124,7 @@ solid_model *solid_model_create(const fsi_case *c, const solid_particles *p, cha
         return NULL;
     }
     m->full_count = solid_bonds_full_count(reach, m->dx);
+    ps_hourglass_weights(m, p);
     const int n = p->n;
     ALLOC(m->mass, n);
     ALLOC(m->density, n);
@@ -128,6 +134,7 @@ solid_model *solid_model_create(const fsi_case *c, const solid_particles *p, cha
     ALLOC(m->work, n);
     ALLOC(m->thickness_stretch, n);
     ALLOC(m->gather, (int64_t)n * PS_GATHER_STRIDE);
+    ALLOC(m->hourglass, (int64_t)n * PS_HOURGLASS_STRIDE);
     ALLOC(m->damage, n);
     ALLOC(m->initial_count, n);
     ALLOC(m->intact_count, n);
@@ -221,7 +228,7 @@ double solid_model_strain_energy(const solid_model *m, const solid_particles *p)
 {
     double total = 0.0;
     for (int i = 0; i < m->n; i++)
-        total += p->volume[i] * m->work[i];
+        total += p->volume[i] * m->work[i] + ps_hourglass_energy(m, p, i);
     return total;
 }
 

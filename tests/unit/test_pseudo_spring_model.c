@@ -12,7 +12,12 @@
  *  - a link stretched beyond the failure strain breaks and stays broken when the
  *    point comes back, the damage is broken / initial links; no link of a
  *    no_failure point breaks; with failure off none breaks;
- *  - a [solid.crack] breaks exactly the links that cross it, at creation. */
+ *  - a [solid.crack] breaks exactly the links that cross it, at creation;
+ *  - the zero-energy mode of the immediate-neighbour stencil (u_y = a (-1)^i along x)
+ *    leaves every interior point unstrained (Eq. 19 cannot see it), and the hourglass
+ *    control stores G V0 (2 a / dx)^2 / 2 per interior point for it, nothing for an
+ *    affine field (stretch plus a large rotation), little (O(dx^2)) for bending, and
+ *    its force is minus the gradient of the energy it reports. */
 #include "pseudo_spring.h"
 #include "unit_solid_model.h"
 
@@ -283,6 +288,119 @@ static void check_crack(void)
     test_lattice_free(p);
 }
 
+/* Stored energy of the positions p->x without a step (the stress work is still 0):
+ * the hourglass control's alone. */
+static double hourglass_energy(solid_model *m, const solid_particles *p)
+{
+    return solid_model_strain_energy(m, p);
+}
+
+static void check_zero_energy_mode(void)
+{
+    const int nx = 12, ny = 12, nz = 4;
+    const int n_axis[3] = {nx, ny, nz};
+    const double a = 1e-7, mu = E / (2.0 * (1.0 + NU)), eps = 2.0 * a / DX;
+    solid_particles *p = test_lattice(nx, ny, nz, DX, RHO);
+    const size_t vec = (size_t)p->n * FSI_DIM * sizeof(double);
+    double *f = malloc(vec), *x_prev = malloc(vec);
+    memcpy(x_prev, p->x0, vec);
+    for (int i = 0; i < p->n; i++)
+        p->x[i * FSI_DIM + 1] += (test_index(p, i, 0) % 2 ? -a : a);
+
+    /* Without the control: the mode strains no interior point, to first order in a
+     * (the mid-point configuration the gradient is taken on is itself perturbed by
+     * a / dx = 1e-5; the edges, with one-sided stencils, see the mode in full). */
+    solid_model *off = model(p, "[solid.pseudo_spring]\nhourglass_control = 0\n");
+    CHECK(hourglass_energy(off, p) == 0.0, "hourglass_control = 0 stores energy");
+    CHECK(test_force(off, p, x_prev, f) == 0, "zero-energy step failed");
+    double inner = 0.0, edge = 0.0;
+    for (int i = 0; i < p->n; i++) {
+        double s = 0.0;
+        for (int k = 0; k < 6; k++)
+            s = fmax(s, fabs(pseudo_spring_stress(off)[i * 6 + k]));
+        if (test_depth(p, i, n_axis) > 0)
+            inner = fmax(inner, s);
+        else
+            edge = fmax(edge, s);
+    }
+    printf("zero-energy mode u_y = %g (-1)^i: largest interior stress %.3g Pa, edge %.3g Pa "
+           "(G eps = %.3g Pa) without the control\n", a, inner, edge, mu * eps);
+    CHECK(inner < 1e-3 * mu * eps && edge > 0.5 * mu * eps, "the mode strains interior points (%g Pa): it is not the "
+          "stencil's zero-energy mode any more", inner);
+    solid_model_free(off);
+
+    /* With it: G V0 eps^2 / 2 per interior point (2D, exactly: H_i = 0 and r = -2 a on
+     * the 6 links with an x offset), edges their own share. */
+    solid_model *m = model(p, NULL);
+    double expect = 0.0;
+    for (int i = 0; i < p->n; i++)
+        expect += 0.5 * mu * p->volume[i] * eps * eps;
+    const double e_mode = hourglass_energy(m, p);
+    printf("hourglass control: energy of the mode %.6g J, %.4f of G V0 eps^2 / 2 per point\n",
+           e_mode, e_mode / expect);
+    CHECK(e_mode > 0.3 * expect && e_mode < 1.5 * expect,
+          "the zero-energy mode stores %g of G V0 eps^2 / 2", e_mode / expect);
+
+    /* Its force is -dE/dx: x_prev = x (no strain increment, no relative velocity, no
+     * stress) leaves the control's force alone; E is quadratic in x, so the central
+     * difference is exact up to round-off. */
+    for (int k = 0; k < p->n * FSI_DIM; k++)
+        p->x[k] = p->x0[k] + 1e-6 * (test_uniform() - 0.5);
+    memcpy(x_prev, p->x, vec);
+    CHECK(test_force(m, p, x_prev, f) == 0, "hourglass force step failed");
+    double worst = 0.0, scale = 0.0;
+    for (int trial = 0; trial < 12; trial++) {
+        const int k = (int)(test_uniform() * p->n * FSI_DIM) % (p->n * FSI_DIM);
+        const double h = 1e-7, x0 = p->x[k];
+        p->x[k] = x0 + h;
+        const double ep = hourglass_energy(m, p);
+        p->x[k] = x0 - h;
+        const double em = hourglass_energy(m, p);
+        p->x[k] = x0;
+        worst = fmax(worst, fabs(f[k] + (ep - em) / (2.0 * h)));
+        scale = fmax(scale, fabs(f[k]));
+    }
+    printf("hourglass force against -dE/dx: largest difference %.3g N (forces up to %.3g N)\n",
+           worst, scale);
+    CHECK(scale > 0.0 && worst < 1e-6 * scale, "hourglass force is not -dE/dx (%g against %g)",
+          worst, scale);
+
+    /* An affine field, a stretch and a rotation by 0.5 rad: nothing. Bending u_x = -k x y,
+     * u_y = k x^2 / 2 (about the lattice centre): the quadratic part only, O(dx^2)
+     * against the bending energy sum V0 E' (k y)^2 / 2. */
+    double c[3] = {0};
+    for (int i = 0; i < p->n; i++)
+        for (int d = 0; d < FSI_DIM; d++)
+            c[d] += p->x0[i * FSI_DIM + d] / p->n;
+    const double th = 0.5;
+    for (int i = 0; i < p->n; i++) {
+        const double X = p->x0[i * FSI_DIM] - c[0], Y = p->x0[i * FSI_DIM + 1] - c[1];
+        p->x[i * FSI_DIM] = c[0] + cos(th) * 1.01 * X - sin(th) * Y;
+        p->x[i * FSI_DIM + 1] = c[1] + sin(th) * 1.01 * X + cos(th) * Y;
+    }
+    const double e_affine = hourglass_energy(m, p);
+    const double kb = 1e-3 / (nx * DX), ep_plane = E / (1.0 - NU * NU);
+    double e_bend = 0.0;
+    for (int i = 0; i < p->n; i++) {
+        const double X = p->x0[i * FSI_DIM] - c[0], Y = p->x0[i * FSI_DIM + 1] - c[1];
+        p->x[i * FSI_DIM] = p->x0[i * FSI_DIM] - kb * X * Y;
+        p->x[i * FSI_DIM + 1] = p->x0[i * FSI_DIM + 1] + 0.5 * kb * X * X;
+        e_bend += 0.5 * p->volume[i] * ep_plane * kb * kb * Y * Y;
+    }
+    const double e_hg_bend = hourglass_energy(m, p);
+    printf("hourglass control: affine field %.3g J (a 1 %% stretch stores %.3g J), bending "
+           "%.4f of the bending energy\n", e_affine,
+           0.5 * E * 1e-4 * p->n * p->volume[0], e_hg_bend / e_bend);
+    CHECK(e_affine < 1e-12 * E * 1e-4 * p->n * p->volume[0], "an affine field stores %g J",
+          e_affine);
+    CHECK(e_hg_bend < 0.05 * e_bend, "bending stores %g of its energy in the control",
+          e_hg_bend / e_bend);
+    free(f);
+    free(x_prev);
+    solid_model_free(m);
+    test_lattice_free(p);
+}
+
 int main(void)
 {
     check_link_counts();
@@ -291,5 +409,6 @@ int main(void)
     check_rigid_rotation();
     check_failure();
     check_crack();
+    check_zero_energy_mode();
     return unit_check_report("test_pseudo_spring_model");
 }
