@@ -12,9 +12,11 @@
 
 /* Per-point state flags (solid_model::flags, pseudo_spring_internal.h). */
 enum {
-    /* A mirrored clamp point (SOLID_MIRRORED): an SPH point like the others (the
-     * odd reflection of its partner's motion), not material (the main loop hands
-     * its force to the partner); never on the surface. */
+    /* A mirrored clamp point (SOLID_MIRRORED): an image, not material. Its
+     * position (the odd reflection of its partner's) and volume enter its
+     * neighbours' sums; it carries no stress, artificial stress or hourglass energy
+     * and stores nothing (the main loop hands the force it receives to the
+     * partner); never on the surface. */
     PS_POINT_GHOST = 1,
     /* A_i (004 Eq. 20) is ill-conditioned (the remaining links nearly on a line): B_i
      * is the regularised inverse (pseudo_spring_gradient.c). */

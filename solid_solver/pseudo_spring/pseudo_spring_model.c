@@ -220,10 +220,12 @@ int solid_model_write_fields(const solid_model *m, fsi_h5_writer *out)
 
 /* Sum over points of V0_i w_i, w_i the stress work per reference volume accumulated
  * by the objective update (= sigma : eps / 2 for linear elasticity; with plasticity
- * it includes the dissipated plastic work). Clamped and mirrored points count: their
- * stress takes part in the forces the main loop applies (the mirrored ones' by the
- * chain rule), so their stress power is part of what the internal forces exchange
- * with the kinetic energy. In index order (independent of the thread count). */
+ * it includes the dissipated plastic work), plus the hourglass control's energy of
+ * the current positions (pseudo_spring_hourglass.c). Mirrored clamp points store
+ * nothing (they are images: w = 0, no hourglass energy); their positions enter the
+ * material points' terms, and the main loop hands their forces to the partners (the
+ * chain rule), so this is what the internal forces exchange with the kinetic energy.
+ * In index order (independent of the thread count). */
 double solid_model_strain_energy(const solid_model *m, const solid_particles *p)
 {
     double total = 0.0;

@@ -83,6 +83,10 @@ int ps_update_point(solid_model *m, const solid_particles *p, const double *x_pr
     if (!(2.0 + tr > 0.0) || !(rho_next > 0.0) || !isfinite(rho_next))
         return PS_STEP_CRUSHED;
     m->density_next[i] = rho_next;
+    /* A mirrored clamp point is an image, not material: its density (its volume in
+     * the neighbours' sums) follows, it carries no stress and stores nothing. */
+    if (m->flags[i] & PS_POINT_GHOST)
+        return PS_STEP_OK;
     const double rho0 = p->density[i];
     solid_objective_update(&m->mat, g, rho0 / (0.5 * (rho + rho_next)), stress, &m->mstate[i],
                            &m->thickness_stretch[i], &m->work[i]);
@@ -99,6 +103,11 @@ void ps_gather_factors(solid_model *m, const solid_particles *p, int i)
      * the volume per unit reference thickness, as in the stress work. */
     fsi_mat_mul(sigma, b, gth);
     fsi_mat_scale(gth, m->thickness_stretch[i]);
+    if (m->flags[i] & PS_POINT_GHOST) {
+        /* No stress of its own (so D = 0 already), no artificial stress either. */
+        gth[FSI_MAT_SIZE] = 0.0;
+        return;
+    }
     /* 004 Eq. 16: |P_r| the largest principal stress where it is tensile (the
      * tensile instability is what the term is for, Monaghan 2000), 0 otherwise. */
     const double tension = fmax(largest_principal(m->stress + (int64_t)i * 6), 0.0);

@@ -17,7 +17,9 @@
  *    leaves every interior point unstrained (Eq. 19 cannot see it), and the hourglass
  *    control stores G V0 (2 a / dx)^2 / 2 per interior point for it, nothing for an
  *    affine field (stretch plus a large rotation), little (O(dx^2)) for bending, and
- *    its force is minus the gradient of the energy it reports. */
+ *    its force is minus the gradient of the energy it reports;
+ *  - mirrored clamp points (SOLID_MIRRORED) are images, not material: after a step
+ *    they carry no stress and store no energy, the others exactly what they would. */
 #include "pseudo_spring.h"
 #include "unit_solid_model.h"
 
@@ -401,6 +403,52 @@ static void check_zero_energy_mode(void)
     test_lattice_free(p);
 }
 
+static void check_mirrored_points(void)
+{
+    const double e = 1e-4;
+    solid_particles *p = test_lattice(10, 7, 4, DX, RHO);
+    const size_t vec = (size_t)p->n * FSI_DIM * sizeof(double);
+    double *f = malloc(vec), *x_prev = malloc(vec);
+    memcpy(x_prev, p->x0, vec);
+    for (int i = 0; i < p->n; i++)
+        p->x[i * FSI_DIM] = (1.0 + e) * p->x0[i * FSI_DIM];
+    solid_model *plain = model(p, NULL);
+    CHECK(test_force(plain, p, x_prev, f) == 0, "stretch step failed");
+    const double e_plain = solid_model_strain_energy(plain, p);
+    int ghosts = 0;
+    for (int i = 0; i < p->n; i++)
+        if (test_index(p, i, 0) == 0) {
+            p->flags[i] |= SOLID_CLAMPED | SOLID_MIRRORED;
+            ghosts++;
+        }
+    solid_model *m = model(p, NULL);
+    CHECK(test_force(m, p, x_prev, f) == 0, "stretch step with mirrored points failed");
+    double ghost_stress = 0.0, other = 0.0;
+    for (int i = 0; i < p->n; i++)
+        for (int k = 0; k < 6; k++) {
+            const double a = pseudo_spring_stress(m)[i * 6 + k];
+            if (p->flags[i] & SOLID_MIRRORED)
+                ghost_stress = fmax(ghost_stress, fabs(a));
+            else
+                other = fmax(other, fabs(a - pseudo_spring_stress(plain)[i * 6 + k]));
+        }
+    /* A uniform stretch does the same work at every point. */
+    const double e_ghost = solid_model_strain_energy(m, p);
+    const double expect = e_plain * (p->n - ghosts) / p->n;
+    printf("mirrored points: %d, their largest stress %.3g Pa, the others' change %.3g Pa, "
+           "energy %.9g J against %.9g J for the material points\n", ghosts, ghost_stress,
+           other, e_ghost, expect);
+    CHECK(ghost_stress == 0.0, "a mirrored point carries a stress (%g Pa)", ghost_stress);
+    CHECK(other == 0.0, "the material points' stress changed (%g Pa)", other);
+    CHECK(fabs(e_ghost / expect - 1.0) < 1e-9, "energy %g J, material points' %g J", e_ghost,
+          expect);
+    free(f);
+    free(x_prev);
+    solid_model_free(m);
+    solid_model_free(plain);
+    test_lattice_free(p);
+}
+
 int main(void)
 {
     check_link_counts();
@@ -410,5 +458,6 @@ int main(void)
     check_failure();
     check_crack();
     check_zero_energy_mode();
+    check_mirrored_points();
     return unit_check_report("test_pseudo_spring_model");
 }
