@@ -6,6 +6,7 @@
 #include "fluid_keys.h"
 #include "material.h"
 #include "nosbpd_keys.h"
+#include "pseudo_spring_keys.h"
 #include "run_keys.h"
 #include "solid_keys.h"
 #include "ulph_keys.h"
@@ -33,8 +34,8 @@ static const fsi_key_table *const dashpot_tables[] = {&fsi_dashpot_fluid_keys};
 /* In [solid] and [fluid]; each model's or scheme's own table goes in its solver
  * section ([solid.nosbpd], [fluid.ulph]). The examples' tables stay in [ROLE]: they
  * are the template for external programs, which read their keys there. */
-static const fsi_key_table *const nosbpd_tables[] = {&fsi_solid_common_keys,
-                                                     &material_key_table};
+static const fsi_key_table *const solid_model_tables[] = {&fsi_solid_common_keys,
+                                                          &material_key_table};
 
 static const fsi_key_table *const ulph_tables[] = {&fsi_fluid_common_keys};
 static const fsi_key_table *const wcsph_tables[] = {&fsi_fluid_common_keys};
@@ -63,8 +64,17 @@ static const fsi_solver_spec solvers[] = {
          "Non-ordinary state-based peridynamics (correspondence model, seed 000 section 2.2) "
          "with zero-energy control, bond failure and Drucker-Prager plasticity "
          "(solid_solver/nosbpd, docs/nosbpd.md).",
-     .key_tables = nosbpd_tables, .n_key_tables = N_TABLES(nosbpd_tables),
+     .key_tables = solid_model_tables, .n_key_tables = N_TABLES(solid_model_tables),
      .own_keys = &fsi_nosbpd_keys, .objects = fsi_solid_object_kinds,
+     .n_objects = FSI_SOLID_N_OBJECT_KINDS, .check = solid_model_check},
+    {.name = "pseudo_spring", .role = "solid", .executable = "fsi-solid-pseudo-spring",
+     .description =
+         "Pseudo-spring SPH (seed 004 section 3, Chakraborty & Shaw 2013): updated-Lagrangian "
+         "SPH over the immediate lattice neighbours with the corrected kernel gradient, "
+         "Jaumann stress rate, artificial viscosity and stress, and link failure "
+         "(solid_solver/pseudo_spring, docs/pseudo_spring.md).",
+     .key_tables = solid_model_tables, .n_key_tables = N_TABLES(solid_model_tables),
+     .own_keys = &fsi_pseudo_spring_keys, .objects = fsi_solid_object_kinds,
      .n_objects = FSI_SOLID_N_OBJECT_KINDS, .check = solid_model_check},
     {.name = "ulph", .role = "fluid", .executable = "fsi-fluid-ulph",
      .description =

@@ -38,6 +38,7 @@
 
 #include "nosbpd_internal.h"
 #include "nosbpd_stress_update.h"
+#include "solid_point_text.h"
 
 #define NO_FORCE_STATE NOSBPD_NO_FORCE_STATE
 
@@ -216,19 +217,6 @@ static void gather_force(const solid_model *m, const solid_particles *p, int i, 
         force[(int64_t)i * FSI_DIM + d] = vi * f[d];
 }
 
-static void describe_point(const solid_particles *p, int i, char *buf, size_t size)
-{
-    int len = snprintf(buf, size, "point id %d at (", p->id ? p->id[i] : i);
-    for (int d = 0; d < FSI_DIM && len > 0 && (size_t)len < size; d++)
-        len += snprintf(buf + len, size - (size_t)len, "%s%.6g", d ? ", " : "",
-                        p->x[(int64_t)i * FSI_DIM + d]);
-    for (int d = 0; d < FSI_DIM && len > 0 && (size_t)len < size; d++)
-        len += snprintf(buf + len, size - (size_t)len, "%s%.6g", d ? ", " : ") (reference (",
-                        p->x0[(int64_t)i * FSI_DIM + d]);
-    if (len > 0 && (size_t)len < size)
-        snprintf(buf + len, size - (size_t)len, "))");
-}
-
 int solid_model_internal_force(solid_model *m, const solid_particles *p, const double *x_prev,
                                double dt, double t, double *force, char *msg, size_t msg_size)
 {
@@ -259,7 +247,7 @@ int solid_model_internal_force(solid_model *m, const solid_particles *p, const d
 
     if (first_bad < n) {
         char at[256];
-        describe_point(p, first_bad, at, sizeof at);
+        solid_describe_point(p, first_bad, at, sizeof at);
         const double *f = m->defgrad + (int64_t)first_bad * FSI_MAT_SIZE;
         const double det = fsi_mat_det(f);
         if (!isfinite(det))

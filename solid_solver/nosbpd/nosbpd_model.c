@@ -26,7 +26,7 @@ void solid_model_free(solid_model *m)
 {
     if (!m)
         return;
-    nosbpd_bonds_free(&m->bonds);
+    solid_bonds_free(&m->bonds);
     free(m->k_inv);
     free(m->moment_inv);
     free(m->fit);
@@ -132,24 +132,6 @@ static double stable_step(const solid_model *m, const solid_particles *p)
     return dt;
 }
 
-/* Breaks the bonds across the case's [solid.crack] segments (a validated case has
- * checked that each separates neighbouring points). Returns 0, or -1 with msg. */
-static int cut_cracks(solid_model *m, const fsi_case *c, const solid_particles *p, char *msg,
-                      size_t msg_size)
-{
-    solid_geometry g;
-    if (solid_geometry_read(&g, c, SECTION, msg, msg_size) != 0)
-        return -1;
-    for (int i = 0; i < g.n_cracks; i++) {
-        const int64_t pairs = nosbpd_bonds_cut(&m->bonds, p->x0, g.cracks[i].from,
-                                               g.cracks[i].to);
-        fprintf(stderr, "nosbpd: [%s] breaks %lld bonds from the start\n", g.cracks[i].section,
-                (long long)pairs);
-    }
-    solid_geometry_free(&g);
-    return 0;
-}
-
 solid_model *solid_model_create(const fsi_case *c, const solid_particles *p, char *msg,
                                 size_t msg_size)
 {
@@ -182,8 +164,9 @@ solid_model *solid_model_create(const fsi_case *c, const solid_particles *p, cha
         free(m);
         return NULL;
     }
-    if (cut_cracks(m, c, p, msg, msg_size) != 0) {
-        nosbpd_bonds_free(&m->bonds);
+    if (solid_bonds_cut_cracks(&m->bonds, c, SECTION, p->x0, "nosbpd", msg, msg_size) !=
+        0) {
+        solid_bonds_free(&m->bonds);
         free(m);
         return NULL;
     }

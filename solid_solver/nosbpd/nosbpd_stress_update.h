@@ -24,7 +24,8 @@
  *
  * The plastic strain tensor of the material state is rotated with the stress. In
  * 2D the z axis is fixed: deps_zz = 0 (plane strain) or solved by the material
- * (plane stress); deps_yz = deps_zx = 0. */
+ * (plane stress); deps_yz = deps_zx = 0. The part from G on (Eqs. 41-46 and the
+ * stress work) is shared with the other solid models: solid_objective.h. */
 #ifndef NOSBPD_STRESS_UPDATE_H
 #define NOSBPD_STRESS_UPDATE_H
 
@@ -32,7 +33,7 @@
 #include "material.h"
 
 /* The mid-point parameter alpha of Eqs. 37-46. */
-#define NOSBPD_HW_ALPHA 0.5
+#define NOSBPD_HW_ALPHA 0.5 /* the same as solid_objective.c's */
 
 /* One point's update. stress (6 components, Cauchy), st, *thickness_stretch (2D
  * plane stress: lambda_z, the thickness ratio; 1 otherwise) and *work (stress work

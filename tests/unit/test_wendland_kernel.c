@@ -1,4 +1,4 @@
-/* The Wendland C2 kernel (fluid_solver/kernels/wendland_c2.h, 004 Eq. 5):
+/* The Wendland C2 kernel (core/wendland_c2.h, 004 Eq. 5):
  *  - 004's 2D normalisation alpha_d = 7 / (32 pi h^2), and the integral of W over its
  *    support is 1 in 2D and 3D (radial Simpson quadrature, 1e-10);
  *  - on a square lattice of spacing dx the sum of W V over the lattice tends to 1 as

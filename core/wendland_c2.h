@@ -1,4 +1,5 @@
-/* The Wendland C2 kernel (Wendland 1995), the kernel of WCSPH (004 Eq. 5):
+/* The Wendland C2 kernel (Wendland 1995), the kernel of WCSPH (004 Eq. 5) and of the
+ * pseudo-spring SPH solid (004 §3; in core/ because both participants use it):
  *
  *     W(q) = alpha_d (q + 1/2) (2 - q)^4   for q = r / h <= 2,   0 beyond,
  *
