@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # C6 water impact on a notched brittle obstacle (docs/benchmarks.md C6,
 # docs/validation.md C6): cases/c6_notched_obstacle.ini with bond failure, the same
-# run with --set solid.nosbpd.failure=false, and the run with failure but without the case's
+# run with --set solid.MODEL.failure=false (MODEL the run's solid model, so --set
+# solid.solver=pseudo_spring swaps the pair), and the run with failure but without the case's
 # no-failure zone at the foot (the case with its [solid.region foot_no_failure]
 # section left out: docs/nosbpd.md, "No-failure zones"), one thread each; then the
 # crack initiation time and place and the damage snapshots at 004 Fig. 14's times
@@ -35,7 +36,7 @@ sweep_run "$OUT/failure_without_zone" "$OUT/case_without_zone.ini"
 "$PY" "$ROOT/bench/fracture_scene.py" --png "$OUT/c6_notched_obstacle.png" \
   --md "$OUT/c6_notched_obstacle.md" --threshold 0.25 --times 0.15,0.20,0.22,0.26 \
   --xlim=0.2,0.45 --ylim=-0.01,0.2 --pmax 6000 \
-  --title "C6 water impact on a notched brittle obstacle (ULPH + NOSB-PD)" \
+  --title "C6 water impact on a notched brittle obstacle ($(sweep_solvers "$OUT/failure"))" \
   --also "failure, no foot zone=$OUT/failure_without_zone" \
   "$OUT/failure" "$OUT/no_failure"
 cat "$OUT/c6_notched_obstacle.md"

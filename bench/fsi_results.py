@@ -17,7 +17,7 @@ def read_case(out_dir):
 def solvers(out_dir):
     """The run's solver combination from its resolved case: "ULPH + NOSB-PD", "WCSPH"."""
     case = read_case(out_dir)
-    names = {"nosbpd": "NOSB-PD"}
+    names = {"nosbpd": "NOSB-PD", "pseudo_spring": "pseudo-spring"}
     found = [case[r]["solver"] for r in ("fluid", "solid") if r in case and "solver" in case[r]]
     return " + ".join(names.get(n, n.upper()) for n in found)
 

@@ -1,10 +1,15 @@
 #!/usr/bin/env bash
-# Validation and performance of the NOSB-PD solid (issue "Core 2/4"): S1, S2, S3 of
+# Validation and performance of a solid model (NOSB-PD by default): S1, S2, S3 of
 # docs/benchmarks.md at several resolutions, and interaction updates per second at 1
 # and 2 threads on S2 at T/dx = 40. Writes OUT/solid_validation.md (the tables of
-# docs/validation.md) and keeps every run's output folder under OUT.
+# docs/validation.md, docs/pseudo_spring.md) and keeps every run's output folder under OUT.
 #
-#   fsi bench solid_validation [OUT] [--quick] [--resume]
+#   fsi bench solid_validation [OUT] [--quick] [--resume] [--solver NAME] [--threads T]
+#                              [--no-perf]
+#
+# --solver runs every case with --set solid.solver=NAME (nosbpd, pseudo_spring, ...).
+# --threads sets the validation runs' thread count (default 2); --no-perf skips the
+# performance runs (for a sweep that shares the machine with other runs).
 #
 # --quick skips the finest resolutions (S1 dx = 0.005 m, S2 T/dx = 40): about 6 min
 # instead of about 25 min on this 2-core machine. --resume keeps the validation runs
@@ -18,13 +23,20 @@ PY=/usr/bin/python3
 OUT="$ROOT/out/bench/solid_validation"
 QUICK=0
 RESUME=0
-for arg in "$@"; do
-  case "$arg" in
+SOLVER=nosbpd
+THREADS=2
+PERF=1
+while [ $# -gt 0 ]; do
+  case "$1" in
     --quick) QUICK=1 ;;
     --resume) RESUME=1 ;;
-    -*) echo "solid_validation: unknown option $arg" >&2; exit 2 ;;
-    *) OUT="$arg" ;;
+    --no-perf) PERF=0 ;;
+    --solver) SOLVER="${2:?--solver needs a name}"; shift ;;
+    --threads) THREADS="${2:?--threads needs a number}"; shift ;;
+    -*) echo "solid_validation: unknown option $1" >&2; exit 2 ;;
+    *) OUT="$1" ;;
   esac
+  shift
 done
 mkdir -p "$OUT"
 REPORT="$OUT/solid_validation.md"
@@ -39,7 +51,8 @@ run_case() {   # run_case NAME CASE [--set ...]: output in OUT/NAME, log in OUT/
   fi
   log "$name ..."
   local t0=$SECONDS
-  "$RUN" "$ROOT/cases/$case_file" --out "$OUT/$name" --force --threads 2 "$@" \
+  "$RUN" "$ROOT/cases/$case_file" --out "$OUT/$name" --force --threads "$THREADS" \
+    --set solid.solver="$SOLVER" "$@" \
     >"$OUT/$name.txt" 2>&1 || { echo "run $name failed, see $OUT/$name.txt" >&2; exit 1; }
   log "$name done in $((SECONDS - t0)) s"
 }
@@ -67,10 +80,10 @@ PY
 }
 
 {
-echo "# NOSB-PD solid validation ($(date -u +%Y-%m-%d), $(git -C "$ROOT" rev-parse --short HEAD))"
+echo "# Solid validation, solver = $SOLVER ($(date -u +%Y-%m-%d), $(git -C "$ROOT" rev-parse --short HEAD))"
 echo
-echo "Defaults: gradient_order = 2, zero_energy_coefficient = 0.3, horizon_factor = 3,"
-echo "influence_function = inverse, mirror clamps (clamp_face = x_max)."
+echo "The model's default keys (docs/cases.md), mirror clamps (clamp_face = x_max);"
+echo "validation runs on $THREADS thread(s)."
 echo
 
 # ---- S1: cantilever, tip deflection against Timoshenko at the loaded column.
@@ -125,6 +138,7 @@ echo "period $period s, error $(calc "'%+.2f %%' % (100*($period/0.114-1))") (wa
 echo
 
 # ---- Performance: S2 at T/dx = 40, a short run, 1 and 2 threads, medians of 3.
+if [ "$PERF" = 1 ]; then
 echo "## Performance (S2 at T/dx = 40, 16 120 points, 5 ms of simulated time)"
 echo
 echo "| threads | interaction (bond) updates/s | particle-steps/s | internal force [s] |"
@@ -134,7 +148,7 @@ for th in 1 2; do
   for rep in 1 2 3; do
     log "performance, $th thread(s), run $rep"
     "$RUN" "$ROOT/cases/s2_plate_oscillation.ini" --out "$OUT/perf_t${th}_$rep" --force \
-      --threads "$th" --set solid.spacing=0.0005 --set "solid.block clamp.min=-0.0015,-0.01" \
+      --threads "$th" --set solid.solver="$SOLVER" --set solid.spacing=0.0005 --set "solid.block clamp.min=-0.0015,-0.01" \
       --set "solid.region fixed.min=-0.0015,-0.01" --set run.end_time=0.005 \
       >"$OUT/perf_t${th}_$rep.txt" 2>&1
     rates="$rates $(sed -n 's/.*internal force \([0-9.]*\) s (\([0-9.e+]*\) interaction updates\/s, \([0-9.e+]*\) particle-steps.*/\2,\3,\1/p' "$OUT/perf_t${th}_$rep/solid.log")"
@@ -144,5 +158,6 @@ import statistics, sys
 r = [tuple(float(v) for v in x.split(',')) for x in sys.argv[1:]]
 print('%.3g | %.3g | %.2f' % tuple(statistics.median(c) for c in zip(*r)))" $rates) |"
 done
+fi
 } | tee "$REPORT"
 log "report: $REPORT"

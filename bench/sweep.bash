@@ -55,11 +55,23 @@ sweep_run() {
   [ $rc = 0 ] || log "$name: run failed (exit $rc), see $dir.txt; what it wrote is still compared"
 }
 
+# The solid model a run of CASE uses: the last --set solid.solver=NAME of the sweep's
+# options, else the case's [solid] solver.
+sweep_solid_solver() {
+  local name="" k
+  for k in ${EXTRA[@]+"${EXTRA[@]}"}; do
+    case "$k" in solid.solver=*) name="${k#solid.solver=}" ;; esac
+  done
+  [ -n "$name" ] || name=$(awk -F' *= *' '/^\[/ {s = $0; next} s == "[solid]" && $1 == "solver" {print $2; exit}' "$1")
+  echo "$name"
+}
+
 # A fracture scene's two runs side by side: OUT/failure (the case) and OUT/no_failure
-# (--set solid.nosbpd.failure=false), one thread each.
+# (--set solid.MODEL.failure=false for the run's solid model), one thread each.
 sweep_run_failure_pair() {
+  local model; model=$(sweep_solid_solver "$1")
   sweep_run "$OUT/failure" "$1" &
-  sweep_run "$OUT/no_failure" "$1" --set solid.nosbpd.failure=false &
+  sweep_run "$OUT/no_failure" "$1" --set "solid.$model.failure=false" &
   wait
 }
 
@@ -70,7 +82,7 @@ sweep_solvers() {
     /^\[/ { section = $0; sub(/\].*/, "]", section); next }
     (section == "[fluid]" || section == "[solid]") && $1 == "solver" {
       name = $2; sub(/ *;.*/, "", name)
-      if (name == "nosbpd") name = "NOSB-PD"; else name = toupper(name)
+      if (name == "nosbpd") name = "NOSB-PD"; else if (name == "pseudo_spring") name = "pseudo-spring"; else name = toupper(name)
       if (section == "[fluid]") fluid = name; else solid = name
     }
     END { if (fluid != "" && solid != "") print fluid " + " solid; else print fluid solid }
