@@ -69,6 +69,9 @@ typedef struct {
     const char *role;           /* the section it may appear in: "fluid" or "solid" */
     const char *executable;     /* program in the build's bin directory */
     const char *description;
+    /* 1 for the example participants of examples/ (no geometry; the template for a
+     * program of one's own), 0 for the project's solvers (`fsi solvers` lists both). */
+    int example;
     /* The keys of the participant section [ROLE] besides the common ones, in several
      * tables (e.g. keys every solid model has, material keys); a key may be defined
      * in only one of them (and not in own_keys). */

@@ -54,11 +54,11 @@ static const fsi_solver_spec solvers[] = {
     {.name = "spring_oscillators", .role = "solid", .executable = "fsi-spring-solid",
      .description =
          "Example solid of independent mass-spring oscillators (examples/spring_solid.c).",
-     .key_tables = spring_tables, .n_key_tables = N_TABLES(spring_tables)},
+     .example = 1, .key_tables = spring_tables, .n_key_tables = N_TABLES(spring_tables)},
     {.name = "linear_dashpot", .role = "fluid", .executable = "fsi-dashpot-fluid",
      .description =
          "Example fluid: a linear dashpot on every solid particle (examples/dashpot_fluid.c).",
-     .key_tables = dashpot_tables, .n_key_tables = N_TABLES(dashpot_tables)},
+     .example = 1, .key_tables = dashpot_tables, .n_key_tables = N_TABLES(dashpot_tables)},
     {.name = "nosbpd", .role = "solid", .executable = "fsi-solid-nosbpd",
      .description =
          "Non-ordinary state-based peridynamics (correspondence model, seed 000 section 2.2) "
