@@ -87,6 +87,26 @@ int solid_bonds_build(solid_bonds *b, const double *x0, const double *volume, in
     return 0;
 }
 
+int64_t *solid_bonds_reverse(const solid_bonds *b)
+{
+    int64_t *reverse = malloc((b->n_bonds > 0 ? (size_t)b->n_bonds : 1) * sizeof *reverse);
+    if (!reverse)
+        return NULL;
+    for (int i = 0; i < b->n_points; i++)
+        for (int64_t q = b->offset[i]; q < b->offset[i + 1]; q++) {
+            const int j = b->neighbour[q];
+            int64_t s = b->offset[j];
+            while (s < b->offset[j + 1] && b->neighbour[s] != i)
+                s++;
+            if (s == b->offset[j + 1]) {
+                free(reverse);
+                return NULL;
+            }
+            reverse[q] = s;
+        }
+    return reverse;
+}
+
 int64_t solid_bonds_cut(solid_bonds *b, const double *x0, const double *from,
                         const double *to)
 {

@@ -56,6 +56,14 @@ int64_t solid_bonds_cut(solid_bonds *b, const double *x0, const double *from,
 int solid_bonds_cut_cracks(solid_bonds *b, const fsi_case *c, const char *role,
                            const double *x0, const char *model, char *msg, size_t msg_size);
 
+/* The reverse of every bond: reverse[q] is the position of J -> I in J's row for the
+ * bond q = I -> J (rows are symmetric: J is in I's row when I is in J's). A model
+ * that evaluates a pair's quantities once and stores them at both of its slots uses
+ * it (each slot written once: no write races, the same result on any thread count).
+ * Returns a malloc'ed array of n_bonds entries (the caller frees it), or NULL when
+ * memory runs out or a bond has no reverse. */
+int64_t *solid_bonds_reverse(const solid_bonds *b);
+
 /* Number of bonds of a point deep inside a regular lattice: the integer lattice
  * vectors n != 0 with |n| dx <= reach (+ tolerance), as the build counts them. */
 int solid_bonds_full_count(double reach, double dx);

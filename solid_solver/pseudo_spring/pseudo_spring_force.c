@@ -1,16 +1,22 @@
-/* Internal force of the pseudo-spring SPH solid (004 §3), three passes over the
+/* Internal force of the pseudo-spring SPH solid (004 §3), four passes over the
  * links, each parallel over points with no shared writes (so the result does not
  * depend on the number of threads, bit for bit):
  *   1. per point (pseudo_spring_stress.c): link failure, the increment gradient G
- *      on the mid-point configuration, density (Eq. 14), stress (Eqs. 17-19);
- *   2. per point, once every density is new: B_i of the current configuration
- *      (Eq. 20), D_i = lambda_z sigma_i B_i, R_i = gamma |P_r,i| / rho_i^2 (Eq. 16);
- *   3. per point, the gather of the momentum equation (Eq. 15) over its intact
+ *      on the mid-point configuration, density (Eq. 14), stress (Eqs. 17-19),
+ *      R_i = gamma |P_r,i| / rho_i^2 (Eq. 16);
+ *   2. per pair, once every link, density and R is final (pseudo_spring_pairs.c):
+ *      the kernel F(r) and the artificial stress P^a = (R_i + R_J) (W(r) / W(dx))^n
+ *      (Eq. 16) of the current configuration, evaluated once and stored at both
+ *      slots of the pair (point i writes its pairs with j > i);
+ *   3. per point: B_i of the current configuration (Eq. 20, with pass 2's F),
+ *      D_i = lambda_z sigma_i B_i, and the hourglass fit;
+ *   4. per point, the gather of the momentum equation (Eq. 15) over its intact
  *      links (f_ij = 1), with x_ij = x_i - x_j, grad_i W_ij = F(r) x_ij, V = m / rho:
  *        f_i = sum_J [ V_i V_J (D_i + D_J) grad_i W_iJ
  *                      - m_i m_J (Pi_iJ + P^a_iJ) grad_i W_iJ ]
  *      Pi the artificial viscosity (Eqs. 8-9, on the mid-point configuration with
- *      the increment velocity du / dt), P^a = (R_i + R_J) (W(r) / W(dx))^n.
+ *      the increment velocity du / dt), F and P^a from pass 2 (the pair's, so each
+ *      end uses the same bits it would have computed itself).
  *
  * The stress term is 004 Eq. 15's sigma_i / rho_i^2 + sigma_J / rho_J^2 with
  * m_i m_J / rho^2 read as V_i V_J and each stress taking its own point's corrected
@@ -33,7 +39,7 @@ static void gather_force(const solid_model *m, const solid_particles *p, const d
 {
     const solid_bonds *l = &m->links;
     const double *restrict x = p->x;
-    const double *di = m->gather + (int64_t)i * PS_GATHER_STRIDE;
+    const double *di = m->gather + (int64_t)i * FSI_MAT_SIZE;
     const double h = m->kernel.h, c = m->sound_speed;
     const double inv_dt = dt > 0.0 ? 1.0 / dt : 0.0;
     const double vi = m->mass[i] / m->density[i];
@@ -42,18 +48,16 @@ static void gather_force(const solid_model *m, const solid_particles *p, const d
         if (!l->intact[q])
             continue;
         const int j = l->neighbour[q];
-        const double *dj = m->gather + (int64_t)j * PS_GATHER_STRIDE;
-        double r[FSI_DIM], r2 = 0.0, rm2 = 0.0, vr = 0.0;
+        const double *dj = m->gather + (int64_t)j * FSI_MAT_SIZE;
+        double r[FSI_DIM], rm2 = 0.0, vr = 0.0;
         for (int d = 0; d < FSI_DIM; d++) {
             const int64_t ki = (int64_t)i * FSI_DIM + d, kj = (int64_t)j * FSI_DIM + d;
             r[d] = x[ki] - x[kj];
-            r2 += r[d] * r[d];
             const double rm = 0.5 * (r[d] + x_prev[ki] - x_prev[kj]);
             rm2 += rm * rm;
             vr += (x[ki] - x_prev[ki] - x[kj] + x_prev[kj]) * inv_dt * rm;
         }
-        double w, fr;
-        wendland_c2_eval2(&m->kernel, r2, &w, &fr);
+        const double fr = m->link_f[q];
         /* Eqs. 8-9: only between approaching points. */
         double pi = 0.0;
         if (vr < 0.0) {
@@ -61,10 +65,9 @@ static void gather_force(const solid_model *m, const solid_particles *p, const d
             pi = (-m->visc_alpha * c * mu + m->visc_beta * mu * mu) /
                  (0.5 * (m->density[i] + m->density[j]));
         }
-        double pa = 0.0;
-        const double rsum = di[FSI_MAT_SIZE] + dj[FSI_MAT_SIZE];
-        if (rsum > 0.0)
-            pa = rsum * pow(w / m->w_dx, m->art_exponent);
+        /* Eq. 16, 0 where off (gamma = 0: no pow at all) or where neither end is in
+         * tension. */
+        const double pa = m->link_art ? m->link_art[q] : 0.0;
         const double vv = vi * m->mass[j] / m->density[j];
         const double central = m->mass[i] * m->mass[j] * (pi + pa);
         for (int a = 0; a < FSI_DIM; a++) {
@@ -112,6 +115,10 @@ int solid_model_internal_force(solid_model *m, const solid_particles *p, const d
     double *swap = m->density;
     m->density = m->density_next;
     m->density_next = swap;
+
+#pragma omp parallel for schedule(static) if (parallel)
+    for (int i = 0; i < n; i++)
+        ps_pair_quantities(m, p, i);
 
     int warn = 0;
 #pragma omp parallel for schedule(static) if (parallel) reduction(+ : warn)

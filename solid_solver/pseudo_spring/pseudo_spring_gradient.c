@@ -24,7 +24,7 @@
 #include "pseudo_spring_internal.h"
 
 int ps_correction(const solid_model *m, const double *x, const double *x_prev,
-                  const double *density, int i, double *b)
+                  const double *density, const double *link_f, int i, double *b)
 {
     const solid_bonds *l = &m->links;
     double a[FSI_MAT_SIZE] = {0}, yi[FSI_DIM];
@@ -40,7 +40,10 @@ int ps_correction(const solid_model *m, const double *x, const double *x_prev,
             r[d] = yi[d] - yj[d];
             r2 += r[d] * r[d];
         }
-        wendland_c2_eval2(&m->kernel, r2, &w, &f);
+        if (link_f)
+            f = link_f[q];      /* evaluated once per pair (pseudo_spring_pairs.c) */
+        else
+            wendland_c2_eval2(&m->kernel, r2, &w, &f);
         /* grad W (x) (x_J - x_i) = -F x_ij (x) x_ij */
         fsi_mat_add_outer(a, -f * m->mass[j] / density[j], r, r);
         count++;
@@ -69,7 +72,7 @@ int ps_increment_gradient(const solid_model *m, const solid_particles *p, const 
 {
     const solid_bonds *l = &m->links;
     double b[FSI_MAT_SIZE];
-    const int outcome = ps_correction(m, p->x, x_prev, m->density, i, b);
+    const int outcome = ps_correction(m, p->x, x_prev, m->density, NULL, i, b);
     /* M = sum_J V_J (du_J - du_i) (x) grad W_iJ on the mid-point configuration; then
      * G = M B^T, i.e. G_ab = sum_J V_J (du_J - du_i)_a W^_iJ,b. */
     double mm[FSI_MAT_SIZE] = {0}, yi[FSI_DIM], dui[FSI_DIM];

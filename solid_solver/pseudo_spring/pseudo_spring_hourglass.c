@@ -33,7 +33,7 @@
  *     f_k = -dE/dx_k = sum_J [kappa_k w_kJ r_kJ - kappa_J w_Jk r_Jk],
  *     kappa_i = 2 G V0_i / sum_J w_iJ |X_iJ|^2,
  * over k's intact links (a link is intact at both ends): a gather with F_J computed
- * beforehand (pass 2), exactly the gradient of sum_i E_i, so the energy the main loop
+ * beforehand (pass 3), exactly the gradient of sum_i E_i, so the energy the main loop
  * checks (solid_model_strain_energy) includes it and closes. This is the idea of
  * Ganzenmueller's (2015) hourglass control for total-Lagrangian SPH (a penalty on
  * x_ij - F_i X_ij), here as the gradient of an energy rather than a pairwise spring
@@ -55,16 +55,6 @@ static double reference_link(const solid_model *m, const solid_particles *p, int
     for (int d = 0; d < FSI_DIM; d++)
         rx[d] = p->x0[(int64_t)j * FSI_DIM + d] - p->x0[(int64_t)i * FSI_DIM + d];
     return m->links.weight[q];
-}
-
-/* The position of point k in j's row (links are symmetric: k is in j's row when j is
- * in k's). */
-static int64_t reverse_link(const solid_bonds *l, int j, int k)
-{
-    for (int64_t q = l->offset[j]; q < l->offset[j + 1]; q++)
-        if (l->neighbour[q] == k)
-            return q;
-    return -1;
 }
 
 void ps_hourglass_weights(solid_model *m, const solid_particles *p)
@@ -152,7 +142,7 @@ void ps_hourglass_force(const solid_model *m, const solid_particles *p, int k, d
                 f[d] += fk[FSI_MAT_SIZE] * w * r[d];
         }
         if (fj[FSI_MAT_SIZE] > 0.0) {
-            const double w = reference_link(m, p, j, reverse_link(l, j, k), rx);
+            const double w = reference_link(m, p, j, m->reverse[q], rx);
             residual(p, fj, j, k, rx, r);
             for (int d = 0; d < FSI_DIM; d++)
                 f[d] -= fj[FSI_MAT_SIZE] * w * r[d];

@@ -42,6 +42,13 @@ struct solid_model {
     int full_count;             /* links of a point deep inside the lattice */
 
     solid_bonds links;          /* immediate neighbours; weight = w_iJ of the hourglass control */
+    int64_t *reverse;           /* per link I -> J: the slot of J -> I (solid_bonds_reverse) */
+    /* Per link, the pair's quantities in the current configuration of this step
+     * (pseudo_spring_pairs.c), evaluated once per pair and stored at both of its
+     * slots: F(r) of grad_i W_ij = F(r) x_ij, and P^a_ij = (R_i + R_j) (W(r) / W(dx))^n
+     * of 004 Eq. 16 (NULL when the artificial stress is off). */
+    double *link_f;
+    double *link_art;
 
     /* Per point. */
     double *mass;               /* rho0 V0 [kg/m^(3-DIM)...] */
@@ -52,8 +59,10 @@ struct solid_model {
     double *work;               /* stress work per reference volume [J/m^3] */
     double *thickness_stretch;  /* lambda_z (2D plane stress), else 1 */
     /* Per point, for the force gather: D = lambda_z sigma B (FSI_DIM x FSI_DIM, B the
-     * correction of the current configuration) and R = gamma |P_r| / rho^2. */
-    double *gather;             /* PS_GATHER_STRIDE each */
+     * correction of the current configuration). */
+    double *gather;             /* FSI_MAT_SIZE each */
+    /* Per point, R = gamma |P_r| / rho^2 of 004 Eq. 16 (pass 1; NULL when off). */
+    double *art_r;
     /* Per point, for the hourglass control (pseudo_spring_hourglass.c): the affine
      * fit F_i of the neighbourhood on the reference lattice and kappa_i (0: none). */
     double *hourglass;          /* PS_HOURGLASS_STRIDE each */
@@ -66,7 +75,6 @@ struct solid_model {
     double *scratch;            /* n * FSI_MAT_SIZE, output */
 };
 
-#define PS_GATHER_STRIDE (FSI_MAT_SIZE + 1)
 #define PS_HOURGLASS_STRIDE (FSI_MAT_SIZE + 1)
 
 /* Position of point j in the configuration of a pass: the current one (x_prev NULL)
@@ -79,11 +87,13 @@ static inline void ps_position(const double *x, const double *x_prev, int64_t j,
 }
 
 /* Correction matrix B_i = A_i^-1 (004 Eq. 20) over point i's intact links in the
- * configuration (x, x_prev) (ps_position), with volumes m_J / rho_J. Returns 0 (exact
- * inverse), PS_POINT_REGULARISED (A_i ill-conditioned: the regularised inverse) or
- * PS_POINT_DETACHED (no intact link: B = 0). */
+ * configuration (x, x_prev) (ps_position), with volumes m_J / rho_J; link_f, when not
+ * NULL, holds F(r) of that configuration per link (m->link_f of the current one),
+ * else the kernel is evaluated. Returns 0 (exact inverse), PS_POINT_REGULARISED (A_i
+ * ill-conditioned: the regularised inverse) or PS_POINT_DETACHED (no intact link:
+ * B = 0). */
 int ps_correction(const solid_model *m, const double *x, const double *x_prev,
-                  const double *density, int i, double *b);
+                  const double *density, const double *link_f, int i, double *b);
 
 /* G_i = sum_J V_J (du_J - du_i) (x) B_i grad W_iJ on the mid-point configuration: the
  * gradient of the displacement increment du = x - x_prev (004 Eq. 19 times dt, with
@@ -100,18 +110,23 @@ int ps_break_links(solid_model *m, const solid_particles *p, int i);
 void ps_count_links(solid_model *m, int i);
 
 /* Pass 1 for point i (pseudo_spring_stress.c): breaks its overstrained links, then
- * updates its density (into density_next) and stress from G. Returns a PS_STEP_*
- * outcome and the number of links it broke. */
+ * updates its density (into density_next), stress from G and R_i (art_r). Returns a
+ * PS_STEP_* outcome and the number of links it broke. */
 enum { PS_STEP_OK = 0, PS_STEP_NOT_FINITE = 1, PS_STEP_CRUSHED = 2 };
 int ps_update_point(solid_model *m, const solid_particles *p, const double *x_prev, int i,
                     int *broke);
 
-/* Pass 1b for point i, after every density is updated: D_i and R_i into gather. */
+/* Pass 2 (pseudo_spring_pairs.c), after pass 1 (final links, densities, R): the
+ * kernel quantities of point i's pairs with every j > i into link_f and link_art,
+ * at both slots of the pair. */
+void ps_pair_quantities(solid_model *m, const solid_particles *p, int i);
+
+/* Pass 3 for point i, after pass 2: D_i into gather. */
 void ps_gather_factors(solid_model *m, const solid_particles *p, int i);
 
 /* Hourglass control (pseudo_spring_hourglass.c): F_i and kappa_i of the current
- * positions into m->hourglass (pass 2); adds the control's force on point k to f
- * (pass 3, after every point's factors); point i's stored energy E_i at the current
+ * positions into m->hourglass (pass 3); adds the control's force on point k to f
+ * (pass 4, after every point's factors); point i's stored energy E_i at the current
  * positions. */
 void ps_hourglass_weights(solid_model *m, const solid_particles *p);   /* at creation */
 void ps_hourglass_factors(solid_model *m, const solid_particles *p, int i);

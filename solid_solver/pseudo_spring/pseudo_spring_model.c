@@ -23,7 +23,11 @@ void solid_model_free(solid_model *m)
     free(m->mstate);
     free(m->work);
     free(m->thickness_stretch);
+    free(m->reverse);
+    free(m->link_f);
+    free(m->link_art);
     free(m->gather);
+    free(m->art_r);
     free(m->hourglass);
     free(m->damage);
     free(m->initial_count);
@@ -126,6 +130,15 @@ solid_model *solid_model_create(const fsi_case *c, const solid_particles *p, cha
     m->full_count = solid_bonds_full_count(reach, m->dx);
     ps_hourglass_weights(m, p);
     const int n = p->n;
+    m->reverse = solid_bonds_reverse(&m->links);
+    if (!m->reverse)
+        goto out_of_memory;     /* the rows are symmetric: no bond lacks its reverse */
+    ALLOC(m->link_f, m->links.n_bonds);
+    if (m->art_stress > 0.0) {
+        /* 004 Eq. 16 is on: R per point, P^a per link (else neither, and no pow). */
+        ALLOC(m->link_art, m->links.n_bonds);
+        ALLOC(m->art_r, n);
+    }
     ALLOC(m->mass, n);
     ALLOC(m->density, n);
     ALLOC(m->density_next, n);
@@ -133,7 +146,7 @@ solid_model *solid_model_create(const fsi_case *c, const solid_particles *p, cha
     ALLOC(m->mstate, n);
     ALLOC(m->work, n);
     ALLOC(m->thickness_stretch, n);
-    ALLOC(m->gather, (int64_t)n * PS_GATHER_STRIDE);
+    ALLOC(m->gather, (int64_t)n * FSI_MAT_SIZE);
     ALLOC(m->hourglass, (int64_t)n * PS_HOURGLASS_STRIDE);
     ALLOC(m->damage, n);
     ALLOC(m->initial_count, n);

@@ -1,7 +1,8 @@
 /* One point's state over a step (pass 1 of pseudo_spring_force.c): link failure,
- * density (004 Eq. 14), the objective stress update (004 Eqs. 17-19), and, once
- * every density is updated, the point's factors for the force gather (the corrected
- * gradient of the current configuration and the artificial stress of 004 Eq. 16).
+ * density (004 Eq. 14), the objective stress update (004 Eqs. 17-19) and R_i of the
+ * artificial stress (004 Eq. 16); and, once every pair's kernel is evaluated (pass 2),
+ * the point's factor D_i for the force gather (with the corrected gradient of the
+ * current configuration, pass 3).
  *
  * Strain increment. 004 integrates the rates with a predictor-corrector scheme, the
  * velocity gradient l = sum_J (v_J - v_i) (x) W^_iJ V_J (Eq. 19 with W^ of Eq. 20)
@@ -57,9 +58,21 @@ static double largest_principal(const double s[6])
 #endif
 }
 
+/* 004 Eq. 16: R_i = gamma |P_r,i| / rho_i^2 with |P_r| the largest principal stress
+ * where it is tensile (the tensile instability is what the term is for, Monaghan
+ * 2000), 0 otherwise; rho_i the new density. */
+static void art_stress_factor(solid_model *m, int i, double rho)
+{
+    const double tension = fmax(largest_principal(m->stress + (int64_t)i * 6), 0.0);
+    m->art_r[i] = m->art_stress * tension / (rho * rho);
+}
+
 int ps_update_point(solid_model *m, const solid_particles *p, const double *x_prev, int i,
                     int *broke)
 {
+    /* R_i stays 0 where the point carries no stress (detached, mirrored). */
+    if (m->art_r)
+        m->art_r[i] = 0.0;
     *broke = ps_break_links(m, p, i);
     double g[FSI_MAT_SIZE];
     const int outcome = ps_increment_gradient(m, p, x_prev, i, g);
@@ -90,27 +103,20 @@ int ps_update_point(solid_model *m, const solid_particles *p, const double *x_pr
     const double rho0 = p->density[i];
     solid_objective_update(&m->mat, g, rho0 / (0.5 * (rho + rho_next)), stress, &m->mstate[i],
                            &m->thickness_stretch[i], &m->work[i]);
+    if (m->art_r)
+        art_stress_factor(m, i, rho_next);
     return PS_STEP_OK;
 }
 
 void ps_gather_factors(solid_model *m, const solid_particles *p, int i)
 {
-    double *gth = m->gather + (int64_t)i * PS_GATHER_STRIDE;
+    double *gth = m->gather + (int64_t)i * FSI_MAT_SIZE;
     double b[FSI_MAT_SIZE], sigma[FSI_MAT_SIZE];
-    (void)ps_correction(m, p->x, NULL, m->density, i, b);
+    (void)ps_correction(m, p->x, NULL, m->density, m->link_f, i, b);
     fsi_sym6_to_mat(m->stress + (int64_t)i * 6, sigma);
     /* D = lambda_z sigma B: lambda_z (plane stress) turns the in-plane volume into
-     * the volume per unit reference thickness, as in the stress work. */
+     * the volume per unit reference thickness, as in the stress work. A mirrored
+     * point has no stress of its own, so D = 0. */
     fsi_mat_mul(sigma, b, gth);
     fsi_mat_scale(gth, m->thickness_stretch[i]);
-    if (m->flags[i] & PS_POINT_GHOST) {
-        /* No stress of its own (so D = 0 already), no artificial stress either. */
-        gth[FSI_MAT_SIZE] = 0.0;
-        return;
-    }
-    /* 004 Eq. 16: |P_r| the largest principal stress where it is tensile (the
-     * tensile instability is what the term is for, Monaghan 2000), 0 otherwise. */
-    const double tension = fmax(largest_principal(m->stress + (int64_t)i * 6), 0.0);
-    const double rho = m->density[i];
-    gth[FSI_MAT_SIZE] = m->art_stress * tension / (rho * rho);
 }
