@@ -8,9 +8,9 @@
 #
 #   bench/combinations.sh c1|c2 [OUT] [--res "LIST"] [--resume | --report] [--threads T] [--set k=v ...]
 #
-# The combinations are the solver programs the build has: build/bin/fsi-fluid-NAME and
-# build/bin/fsi-solid-NAME (a '-' in NAME is '_' in the case: fsi-solid-pseudo-spring is
-# solver = pseudo_spring), so a new solver joins without editing this script. --res is
+# The combinations are the built solvers `fsi solvers` lists (the registry `fsi run`
+# checks names against; examples left out), so a new solver joins without editing this
+# script. --res is
 # the scene's resolution list (C1: spacings, default "0.004 0.002"; C2: T / dx, default
 # "2 3"). Each combination's runs are in OUT/FLUID_SOLID (the scene script's layout);
 # writes OUT/combinations.md, OUT/accuracy_speed.csv and OUT/accuracy_speed.png.
@@ -43,14 +43,11 @@ done
 mkdir -p "$OUT"
 log() { echo "[combinations $SCENE] $*" >&2; }
 
-solvers_of() {  # solvers_of fluid|solid: the case names of the build's solver programs
-  local p
-  for p in "$ROOT"/build/bin/fsi-"$1"-*; do
-    [ -x "$p" ] && basename "$p" | sed "s/^fsi-$1-//; s/-/_/g"
-  done
+solvers_of() {  # solvers_of fluid|solid: the built solvers of that role (fsi solvers)
+  "$ROOT/build/bin/fsi-solvers" | awk -v r="$1" '!/^#/ && $1 == r && $3 == "solver" && $5 == "yes" {print $2}'
 }
 FLUIDS=$(solvers_of fluid); SOLIDS=$(solvers_of solid)
-[ -n "$FLUIDS" ] && [ -n "$SOLIDS" ] || { log "no solver programs in $ROOT/build/bin (build first)"; exit 1; }
+[ -n "$FLUIDS" ] && [ -n "$SOLIDS" ] || { log "no built solvers (fsi solvers; build first)"; exit 1; }
 log "fluids: $(echo $FLUIDS); solids: $(echo $SOLIDS); resolutions: $RES"
 
 DIRS=()
