@@ -185,18 +185,27 @@ out_of_memory:
 /* The SPH solid's CFL condition dt = C h / (c + |v|max) (Monaghan 1992 without the
  * viscous term, which is small for elastic solids), c = sqrt(M / rho) the P-wave
  * speed, M = K + 4 G / 3 (or its plane-stress form, material_wave_modulus); never
- * above the lattice bound dx / c that solid_step_check.c estimates from. */
+ * above the lattice bound dx / c that solid_step_check.c estimates from.
+ * After failure: a point left with n of its n0 lattice links carries its whole mass
+ * on fewer links, each weighted up by the correction B = A^-1 (Eq. 20, A summed over
+ * the intact links), so its stiffness grows as about n0 / n and its frequency as
+ * sqrt(n0 / n). The step shrinks by sqrt(n / n0) of the worst such point (detached
+ * points interact with nothing and do not count); the factor is 1 while no link is
+ * broken or cut. C6 at dx = 2.5 mm went unstable without it when an edge point fell
+ * to 1 of its 5 links (docs/pseudo_spring.md, "Stable step"). */
 double solid_model_stable_dt(const solid_model *m, const solid_particles *p)
 {
-    double v2 = 0.0;
+    double v2 = 0.0, link_ratio = 1.0;
     for (int i = 0; i < p->n; i++) {
         double s = 0.0;
         for (int d = 0; d < FSI_DIM; d++)
             s += p->v[i * FSI_DIM + d] * p->v[i * FSI_DIM + d];
         v2 = fmax(v2, s);
+        if (m->intact_count[i] > 0 && m->intact_count[i] < m->initial_count[i])
+            link_ratio = fmin(link_ratio, (double)m->intact_count[i] / m->initial_count[i]);
     }
     const double c = m->sound_speed;
-    return fmin(m->courant * m->kernel.h / (c + sqrt(v2)), m->dx / c);
+    return sqrt(link_ratio) * fmin(m->courant * m->kernel.h / (c + sqrt(v2)), m->dx / c);
 }
 
 int solid_model_surface(const solid_model *m, const solid_particles *p, uint8_t *surface)

@@ -11,7 +11,8 @@
  *    with the body (the Jaumann rate, 004 Eq. 17);
  *  - a link stretched beyond the failure strain breaks and stays broken when the
  *    point comes back, the damage is broken / initial links; no link of a
- *    no_failure point breaks; with failure off none breaks;
+ *    no_failure point breaks; with failure off none breaks; the stable step shrinks
+ *    by sqrt(intact / initial links) of the worst point, and not without a break;
  *  - a [solid.crack] breaks exactly the links that cross it, at creation;
  *  - the zero-energy mode of the immediate-neighbour stencil (u_y = a (-1)^i along x)
  *    leaves every interior point unstrained (Eq. 19 cannot see it), and the hourglass
@@ -213,6 +214,7 @@ static void check_failure(void)
                                                  "failure_strain = 0.05\n");
         const size_t vec = (size_t)p->n * FSI_DIM * sizeof(double);
         double *f = malloc(vec), *x_prev = malloc(vec);
+        const double dt_intact = solid_model_stable_dt(m, p);
         memcpy(x_prev, p->x, vec);
         p->x[moved * 2] += 0.2 * DX;
         CHECK(test_force(m, p, x_prev, f) == 0, "failure step failed");
@@ -231,6 +233,11 @@ static void check_failure(void)
                       "partner damage %g, 1/8 expected", damage[partners[k]]);
             CHECK(pseudo_spring_intact_count(m)[moved] == 5, "intact links %d, 5 expected",
                   pseudo_spring_intact_count(m)[moved]);
+            /* The stable step follows the worst point's share of its links: 5 of 8. */
+            const double dt_ratio = solid_model_stable_dt(m, p) / dt_intact;
+            CHECK(fabs(dt_ratio - sqrt(5.0 / 8.0)) < 1e-14,
+                  "stable step after failure %.15g of the intact one, sqrt(5/8) expected",
+                  dt_ratio);
             /* Stays broken: a second stretch of the same links breaks nothing new. */
             memcpy(x_prev, p->x, vec);
             p->x[moved * 2] += 0.2 * DX;
@@ -242,6 +249,8 @@ static void check_failure(void)
         } else {
             CHECK(broken == 0, "%s: %lld links broken", variant == 1 ? "no_failure zone" :
                   "failure off", (long long)broken);
+            CHECK(solid_model_stable_dt(m, p) == dt_intact,
+                  "the stable step changed with no link broken");
         }
         printf("failure (%s): %lld directed links broken, damage %.4g at the moved point\n",
                variant == 0 ? "on" : variant == 1 ? "no_failure point" : "off",
