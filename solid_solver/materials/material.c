@@ -1,5 +1,6 @@
 /* Derived constants, the wave modulus, stress invariants and the dispatch of
- * material_update() to the model files (linear_elastic.c, drucker_prager.c). */
+ * material_update() to the model files (linear_elastic.c, drucker_prager.c; the
+ * hyperelastic kinds have only the total form of hyperelastic.c). */
 #include <math.h>
 
 #include "dim.h"
@@ -71,6 +72,16 @@ void material_update(const material *m, double deps[6], double stress[6], materi
     switch (m->kind) {
     case MATERIAL_DRUCKER_PRAGER:
         material_drucker_prager_update(m, deps, stress, st);
+        break;
+    case MATERIAL_SAINT_VENANT_KIRCHHOFF:
+    case MATERIAL_NEO_HOOKEAN:
+        /* A stress of F alone has no rate form here; running Hooke's law instead
+         * would be a different material under this one's name. NaN makes the
+         * caller's finiteness check stop the run (material.h). */
+        for (int i = 0; i < 6; i++)
+            stress[i] = NAN;
+        if (st)
+            st->yielding = 0;
         break;
     case MATERIAL_LINEAR_ELASTIC:
     default:

@@ -1,13 +1,19 @@
-/* Constitutive models shared by every solid model (NOSB-PD now; TLSPH and
- * pseudo-spring SPH later): given a strain increment, update the Cauchy stress and
- * the plastic state. Stress and strain are always full 3D symmetric tensors in the
- * order xx, yy, zz, xy, yz, zx with TENSOR shear components (eps_xy, not gamma_xy),
- * so 2D plane strain (deps_zz = 0) and plane stress (sigma_zz = 0, the model
- * solves for deps_zz) share one code path.
+/* Constitutive models shared by every solid model (NOSB-PD, pseudo-spring SPH,
+ * TLSPH), in two forms:
+ *  - incremental (material_update): given a strain increment, update the Cauchy
+ *    stress and the plastic state (linear_elastic, drucker_prager);
+ *  - total (material_total_stress): the stress and strain energy as functions of the
+ *    deformation gradient (saint_venant_kirchhoff, neo_hookean, and linear_elastic's
+ *    Almansi-Hooke form), for models that have F.
+ * Stress and strain are always full 3D symmetric tensors in the order xx, yy, zz, xy,
+ * yz, zx with TENSOR shear components (eps_xy, not gamma_xy), so 2D plane strain
+ * (deps_zz = 0) and plane stress (sigma_zz = 0, the model solves for deps_zz) share
+ * one code path.
  *
  * The rotation part of the objective update (000 Eqs. 44-46) is done by the caller;
  * a material only sees the rotation-free increment (000 Eq. 43, generalised to
- * plasticity by a return mapping). */
+ * plasticity by a return mapping). The total form needs no rotation: it is objective
+ * by construction. docs/materials.md has the equations. */
 #ifndef FSI_MATERIAL_H
 #define FSI_MATERIAL_H
 
@@ -16,7 +22,12 @@
 
 #include "case_file.h"
 
-typedef enum { MATERIAL_LINEAR_ELASTIC, MATERIAL_DRUCKER_PRAGER } material_kind;
+typedef enum {
+    MATERIAL_LINEAR_ELASTIC,
+    MATERIAL_DRUCKER_PRAGER,
+    MATERIAL_SAINT_VENANT_KIRCHHOFF,    /* hyperelastic: total form only */
+    MATERIAL_NEO_HOOKEAN                /* hyperelastic: total form only */
+} material_kind;
 typedef enum { MATERIAL_PLANE_STRAIN, MATERIAL_PLANE_STRESS } material_plane;
 
 typedef struct {
@@ -51,8 +62,48 @@ int material_from_case(material *m, const fsi_case *c, const char *section, char
 void material_derive(material *m);
 
 /* sigma += D : deps, with plastic correction for Drucker-Prager. stress and deps are
- * 6-component tensors; in plane stress deps[2] is an output (the thickness strain). */
+ * 6-component tensors; in plane stress deps[2] is an output (the thickness strain).
+ * The hyperelastic kinds have no incremental form: for them every component of
+ * stress becomes NaN (deps untouched), so that a model which calls this instead of
+ * material_total_stress stops at its first finiteness check instead of running
+ * Hooke's law under another material's name. */
 void material_update(const material *m, double deps[6], double stress[6], material_state *st);
+
+/* 1 for materials whose stress is a function of the deformation gradient alone
+ * (saint_venant_kirchhoff, neo_hookean): they need a model that has F. */
+int material_is_hyperelastic(const material *m);
+
+/* Total-form response at the deformation gradient f (FSI_MAT_SIZE entries, the
+ * FSI_DIM x FSI_DIM matrix row-major, as core/small_tensor.h stores matrices).
+ * Valid for every kind except MATERIAL_DRUCKER_PRAGER (which returns -1):
+ *  - saint_venant_kirchhoff: E = (F^T F - I)/2, S = lambda tr(E) I + 2 mu E, P = F S,
+ *    W = lambda/2 tr(E)^2 + mu E:E;
+ *  - neo_hookean (compressible, Ciarlet / Bonet & Wood form):
+ *    W = mu/2 (I1 - 3) - mu ln J + lambda/2 (ln J)^2, P = mu (F - F^-T) + lambda ln J F^-T;
+ *  - linear_elastic: 003's TLSPH law (003 Eqs. 37-40 with Eq. 39 read as the Almansi
+ *    strain e = F^-T E F^-1 = (I - F^-T F^-1)/2): sigma = lambda tr(e) I + 2 mu e
+ *    (Hooke), P = J sigma F^-T; this is not hyperelastic, its W is the small-strain
+ *    1/2 e : D : e times J, exact to second order in the strain (P = dW/dF only to
+ *    first order in the strain, relative).
+ * In 2D, plane strain has F_zz = 1; plane stress solves F_zz (the thickness stretch)
+ * so that the zz stress vanishes (closed form for SVK and for the Almansi-Hooke law,
+ * a guarded Newton iteration for neo_hookean) and uses the full 3D W with it.
+ * Outputs: p (first Piola-Kirchhoff, FSI_MAT_SIZE, nominal: the force per reference
+ * area, the divergence of which in X is the force density), sigma (Cauchy stress, 6
+ * components in the order xx, yy, zz, xy, yz, zx as material.h stores tensors; may
+ * be NULL), *energy (strain energy per REFERENCE volume [J/m^3]; may be NULL),
+ * *thickness_stretch (F_zz; may be NULL; 1 in 3D and plane strain).
+ * Returns 0, or -1 when det F <= 0 (or the 3D J including F_zz) or F is not finite;
+ * also when F is numerically singular (condition number above 1e12, for the laws
+ * that need F^-1) and in plane stress when no thickness stretch makes the zz stress
+ * vanish (SVK once the in-plane tr E reaches (1 - nu) / (2 nu), the Almansi-Hooke law
+ * once the in-plane tr e reaches -(1 - nu) / (2 nu): docs/materials.md); nothing is
+ * written then. */
+int material_total_stress(const material *m, const double *f, double *p, double sigma[6],
+                          double *energy, double *thickness_stretch);
+
+/* The constitutive key's word for a kind ("linear_elastic", ...). */
+const char *material_kind_name(material_kind k);
 
 /* P-wave modulus (lambda + 2 mu, or the plane-stress equivalent): the wave speed
  * sqrt(M / rho) sets the stable step. */

@@ -9,9 +9,10 @@
  *    table defaults (0) exist only because the key table is shared with
  *    linear_elastic; a soil's strength silently defaulting to a frictionless,
  *    cohesionless cone (no strength at all) or to phi = 0 is a trap.
- *  - Drucker-Prager keys given with linear_elastic are an error, not ignored: they
- *    would suggest a strength the model does not have (the same rule as load keys
- *    on a region that does not load, solid_check.c).
+ *  - Drucker-Prager keys given with any other model (linear_elastic or a
+ *    hyperelastic one) are an error, not ignored: they would suggest a strength the
+ *    model does not have (the same rule as load keys on a region that does not load,
+ *    solid_check.c).
  *  - dilation_angle > friction_angle is rejected: on the cone the plastic work per
  *    unit dlambda is sigma : dg/dsigma = k + (beta - alpha) I1, which for beta >
  *    alpha turns negative under enough confinement (I1 << 0), i.e. plastic flow
@@ -70,6 +71,26 @@ static void problem(reporter *r, const char *key, const char *fmt, ...)
 
 static const double DEG = 3.14159265358979323846 / 180.0;
 
+/* The words of the constitutive key (material_keys.c lists the same ones). */
+static const struct {
+    const char *name;
+    material_kind kind;
+} KINDS[] = {
+    {"linear_elastic", MATERIAL_LINEAR_ELASTIC},
+    {"drucker_prager", MATERIAL_DRUCKER_PRAGER},
+    {"saint_venant_kirchhoff", MATERIAL_SAINT_VENANT_KIRCHHOFF},
+    {"neo_hookean", MATERIAL_NEO_HOOKEAN},
+};
+#define N_KINDS ((int)(sizeof KINDS / sizeof KINDS[0]))
+
+const char *material_kind_name(material_kind k)
+{
+    for (int i = 0; i < N_KINDS; i++)
+        if (KINDS[i].kind == k)
+            return KINDS[i].name;
+    return "unknown";
+}
+
 /* Fills m from the case without deriving; returns the number of problems. */
 static int read_and_check(material *m, reporter *r)
 {
@@ -78,14 +99,19 @@ static int read_and_check(material *m, reporter *r)
 
     const char *kind = fsi_case_get(c, s, "constitutive");
     memset(m, 0, sizeof *m);
-    if (!kind || strcmp(kind, "linear_elastic") == 0) {
-        m->kind = MATERIAL_LINEAR_ELASTIC;
-    } else if (strcmp(kind, "drucker_prager") == 0) {
-        m->kind = MATERIAL_DRUCKER_PRAGER;
-    } else {
-        problem(r, "constitutive", "unknown model '%s' (linear_elastic or drucker_prager)",
-                kind);
-        m->kind = MATERIAL_LINEAR_ELASTIC;
+    m->kind = MATERIAL_LINEAR_ELASTIC;
+    if (kind) {
+        int found = 0;
+        for (int i = 0; i < N_KINDS && !found; i++)
+            if (strcmp(kind, KINDS[i].name) == 0) {
+                m->kind = KINDS[i].kind;
+                found = 1;
+            }
+        if (!found)
+            problem(r, "constitutive",
+                    "unknown model '%s' (linear_elastic, drucker_prager, "
+                    "saint_venant_kirchhoff or neo_hookean)",
+                    kind);
     }
     m->plane = MATERIAL_PLANE_STRAIN;
 #if FSI_DIM == 2
@@ -148,7 +174,8 @@ static int read_and_check(material *m, reporter *r)
             if (given(c, s, dp_keys[i]))
                 problem(r, dp_keys[i],
                         "only used with constitutive = drucker_prager (this material is "
-                        "linear_elastic)");
+                        "%s)",
+                        material_kind_name(m->kind));
     }
     return r->n;
 }

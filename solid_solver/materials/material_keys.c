@@ -12,10 +12,14 @@
 
 const fsi_key_spec material_keys[] = {
     {"constitutive", FSI_KEY_CHOICE, "-", "linear_elastic", 0, 0, 0,
-     "linear_elastic|drucker_prager",
+     "linear_elastic|drucker_prager|saint_venant_kirchhoff|neo_hookean",
      "Constitutive model: linear_elastic (isotropic Hooke's law in the incremental "
-     "objective update of 000 Eq. 43) or drucker_prager (perfectly plastic Drucker-Prager "
-     "cone matched to Mohr-Coulomb in plane strain, docs/materials.md)."},
+     "objective update of 000 Eq. 43), drucker_prager (perfectly plastic Drucker-Prager "
+     "cone matched to Mohr-Coulomb in plane strain), saint_venant_kirchhoff (hyperelastic, "
+     "Hooke's law of the Green-Lagrange strain, as the Turek-Hron CSM tests define it) or "
+     "neo_hookean (compressible neo-Hookean hyperelasticity for rubber-like large "
+     "strains); the hyperelastic two need a model with a deformation gradient (NOSB-PD, "
+     "TLSPH; not pseudo_spring), docs/materials.md."},
     /* From aerogels (1 kg/m^3) with room to spare to four times the densest element
      * (osmium, 22590 kg/m^3): a range of physics; the step it gives is checked apart
      * (solid_check.c). */

@@ -329,6 +329,31 @@ static void test_case_keys(void)
     }
     fsi_case_free(c);
 
+    /* The hyperelastic kinds: read by name, plane stress allowed, constants derived. */
+    static const struct {
+        const char *word;
+        material_kind kind;
+    } hyper[] = {{"saint_venant_kirchhoff", MATERIAL_SAINT_VENANT_KIRCHHOFF},
+                 {"neo_hookean", MATERIAL_NEO_HOOKEAN}};
+    for (int i = 0; i < 2; i++) {
+        char lines[512];
+        snprintf(lines, sizeof lines,
+                 "constitutive = %s\ndensity = 1100\nyoungs_modulus = 1.4e6\n"
+                 "poisson_ratio = 0.4\n%s",
+                 hyper[i].word, FSI_DIM == 2 ? "plane = stress\n" : "");
+        c = load(hyper[i].word, lines, &n, errs, sizeof errs);
+        CHECK(c && n == 0, "valid %s case: %d errors: %s", hyper[i].word, n, errs);
+        if (c && n == 0) {
+            CHECK(material_from_case(&m, c, "solid", msg, sizeof msg) == 0, "from_case: %s", msg);
+            CHECK(m.kind == hyper[i].kind && material_is_hyperelastic(&m) &&
+                      (FSI_DIM == 3 || m.plane == MATERIAL_PLANE_STRESS) &&
+                      close_to(m.shear_modulus, 1.4e6 / 2.8, 1e6),
+                  "%s: kind %d, plane %d, mu %g", hyper[i].word, (int)m.kind, (int)m.plane,
+                  m.shear_modulus);
+        }
+        fsi_case_free(c);
+    }
+
     /* Cross-key errors: each names its key, in validation and in from_case. */
     static const struct {
         const char *name, *lines, *key;
@@ -346,6 +371,12 @@ static void test_case_keys(void)
         {"dp_no_strength", "constitutive = drucker_prager\ncohesion = 0\nfriction_angle = 0\n",
          "] cohesion: "},
         {"le_cohesion", "cohesion = 1e3\n", "] cohesion: only used"},
+        {"svk_friction", "constitutive = saint_venant_kirchhoff\nfriction_angle = 20\n",
+         "] friction_angle: only used with constitutive = drucker_prager (this material is "
+         "saint_venant_kirchhoff)"},
+        {"nh_dilation", "constitutive = neo_hookean\ndilation_angle = 5\n",
+         "] dilation_angle: only used with constitutive = drucker_prager (this material is "
+         "neo_hookean)"},
     };
     for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
         char lines[512];
