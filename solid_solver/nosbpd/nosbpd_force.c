@@ -21,8 +21,10 @@
  *   - N_{n+1} and N_n (at x_prev) over the intact bonds; if a bond broke, K, A^-1
  *     and the damage are recomputed (Eqs. 34, 49);
  *   - C = N_{n+1} A^-1, F_{n+1} and F_n (Eqs. 36, 38);
- *   - Hughes-Winget update of the Cauchy stress (Eqs. 37-46, nosbpd_stress_update.h);
- *   - P = J sigma F^-T (Eq. 35) and D_I = P G - s C.
+ *   - Hughes-Winget update of the Cauchy stress (Eqs. 37-46, nosbpd_stress_update.h)
+ *     and P = J sigma F^-T (Eq. 35); for a hyperelastic material instead P, sigma and
+ *     W from F_{n+1} alone (material_total_stress, point_stress below);
+ *   - D_I = P G - s C.
  * Pass 2, per point I, the gather form of Eq. 32 with T_I<xi> = omega P_I G_I b(xi),
  * T_J<-xi> = omega P_J G_J b(-xi), plus the stabilisation
  * T_s,I<xi> = s omega (y - C_I b(xi)) (nosbpd_stabilisation.h):
@@ -60,6 +62,24 @@ static int all_finite(const double *a, int count)
         if (!isfinite(a[k]))
             return 0;
     return 1;
+}
+
+/* P (pk1) and the Cauchy stress of point i at F_{n+1} = f1. A hyperelastic material
+ * is a function of F: P, sigma and W per reference volume (into work, which
+ * solid_model_strain_energy sums) come from f1 alone (materials/hyperelastic.c), with no
+ * rate, no rotation and no integration error in W. The others integrate their rate
+ * from F_n = f0: Hughes-Winget (Eqs. 37-46), then P = J sigma F^-T (Eq. 35). Returns 0,
+ * or -1 (F inverted, singular or ill-conditioned). */
+static int point_stress(solid_model *m, int i, const double *f0, const double *f1,
+                        double *stress, double *pk1)
+{
+    if (material_is_hyperelastic(&m->mat))
+        return material_total_stress(&m->mat, f1, pk1, stress, &m->work[i],
+                                     &m->thickness_stretch[i]);
+    if (nosbpd_hughes_winget(&m->mat, f0, f1, stress, &m->mstate[i], &m->thickness_stretch[i],
+                             &m->work[i]) != 0)
+        return -1;
+    return nosbpd_first_piola(stress, f1, m->thickness_stretch[i], pk1);
 }
 
 /* Pass 1 for point i; returns a POINT_* outcome and the number of bonds it broke. */
@@ -150,10 +170,7 @@ static int update_point(solid_model *m, const solid_particles *p, const double *
 
     double *stress = m->stress + (int64_t)i * 6;
     double pk1[FSI_MAT_SIZE];
-    if (fsi_mat_det(f1_new) <= 0.0 ||
-        nosbpd_hughes_winget(&m->mat, f0, f1_new, stress, &m->mstate[i],
-                             &m->thickness_stretch[i], &m->work[i]) != 0 ||
-        nosbpd_first_piola(stress, f1_new, m->thickness_stretch[i], pk1) != 0) {
+    if (fsi_mat_det(f1_new) <= 0.0 || point_stress(m, i, f0, f1_new, stress, pk1) != 0) {
         fsi_mat_copy(f1_new, f1);
         return POINT_INVERTED;
     }

@@ -94,7 +94,8 @@ struct solid_model {
     double *gather;
     double *stress;                 /* Cauchy stress, 6 each */
     material_state *mstate;
-    double *work;                   /* stress work per reference volume [J/m^DIM...] */
+    double *work;                   /* stress work per reference volume [J/m^DIM...];
+                                     * hyperelastic: W(F) of the last call */
     double *thickness_stretch;      /* lambda_z (2D plane stress), else 1 */
     double *family_volume;          /* sum of V_J over the whole family (Eq. 49) */
     double *damage;                 /* Eq. 49 */

@@ -264,10 +264,12 @@ int solid_model_write_fields(const solid_model *m, fsi_h5_writer *out)
 
 /* Sum over points of V_I (w_I + W_s,I): w_I the stress work per reference volume
  * accumulated by the Hughes-Winget update (= 1/2 sigma : eps for linear elasticity;
- * with plasticity it includes the dissipated plastic work), W_s,I the energy of the
- * zero-energy mode control, 1/2 G C_w sum_J omega V_J |z|^2, z = y - C b(xi), at the
- * current positions with the fit C of the last internal-force call. Per-point terms
- * in parallel, the sum in index order (independent of the thread count). */
+ * with plasticity it includes the dissipated plastic work), or for a hyperelastic
+ * material its strain energy W(F) per reference volume at the last internal-force
+ * call (material_total_stress); W_s,I the energy of the zero-energy mode control,
+ * 1/2 G C_w sum_J omega V_J |z|^2, z = y - C b(xi), at the current positions with the
+ * fit C of the last internal-force call. Per-point terms in parallel, the sum in
+ * index order (independent of the thread count). */
 double solid_model_strain_energy(const solid_model *m, const solid_particles *p)
 {
     const nosbpd_bonds *b = &m->bonds;
