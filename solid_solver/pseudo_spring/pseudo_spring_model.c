@@ -108,6 +108,17 @@ solid_model *solid_model_create(const fsi_case *c, const solid_particles *p, cha
         free(m);
         return NULL;
     }
+    if (material_is_hyperelastic(&m->mat)) {
+        /* Its stress is integrated from the Jaumann rate (004 Eq. 17): there is no
+         * deformation gradient for a stress of F (materials/hyperelastic.c). */
+        const char *at = fsi_case_origin(c, SECTION, "constitutive");
+        snprintf(msg, msg_size,
+                 "%s%s[%s] constitutive: %s is hyperelastic (a stress of the deformation "
+                 "gradient); pseudo_spring has no deformation gradient; use linear_elastic",
+                 at ? at : "", at ? ": " : "", SECTION, material_kind_name(m->mat.kind));
+        free(m);
+        return NULL;
+    }
     m->n = p->n;
     m->dx = p->spacing;
     if (!(m->dx > 0.0)) {

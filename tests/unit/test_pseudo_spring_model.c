@@ -20,7 +20,9 @@
  *    affine field (stretch plus a large rotation), little (O(dx^2)) for bending, and
  *    its force is minus the gradient of the energy it reports;
  *  - mirrored clamp points (SOLID_MIRRORED) are images, not material: after a step
- *    they carry no stress and store no energy, the others exactly what they would. */
+ *    they carry no stress and store no energy, the others exactly what they would;
+ *  - a hyperelastic material (a stress of F) is refused at creation, naming the key:
+ *    the model has no deformation gradient. */
 #include "pseudo_spring.h"
 #include "unit_solid_model.h"
 
@@ -458,6 +460,25 @@ static void check_mirrored_points(void)
     test_lattice_free(p);
 }
 
+static void check_refuses_hyperelastic(void)
+{
+    static const char *const kinds[] = {"saint_venant_kirchhoff", "neo_hookean"};
+    solid_particles *p = test_lattice(4, 4, 4, DX, RHO);
+    for (int k = 0; k < 2; k++) {
+        char text[1024], msg[512], want[128];
+        snprintf(text, sizeof text, "%sconstitutive = %s\n", CASE_BASE, kinds[k]);
+        fsi_case *c = test_case(text);
+        solid_model *m = solid_model_create(c, p, msg, sizeof msg);
+        snprintf(want, sizeof want, "[solid] constitutive: %s", kinds[k]);
+        CHECK(!m && strstr(msg, want) &&
+                  strstr(msg, "pseudo_spring has no deformation gradient; use linear_elastic"),
+              "%s: model %p, message '%s'", kinds[k], (void *)m, msg);
+        solid_model_free(m);
+        fsi_case_free(c);
+    }
+    test_lattice_free(p);
+}
+
 int main(void)
 {
     check_link_counts();
@@ -468,5 +489,6 @@ int main(void)
     check_crack();
     check_zero_energy_mode();
     check_mirrored_points();
+    check_refuses_hyperelastic();
     return unit_check_report("test_pseudo_spring_model");
 }
