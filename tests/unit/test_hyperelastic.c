@@ -31,6 +31,7 @@
 #include <string.h>
 
 #include "unit_check.h"
+#include "unit_material.h"
 #include "unit_random.h"
 
 /* Round-off tolerance of one evaluation, relative to the size of the quantity: a few
@@ -62,15 +63,7 @@ static const material_plane PLANES[] = {MATERIAL_PLANE_STRAIN};   /* ignored in 
 
 static material make(material_kind kind, material_plane plane)
 {
-    material m;
-    memset(&m, 0, sizeof m);
-    m.kind = kind;
-    m.plane = plane;
-    m.density = 1000.0;
-    m.youngs_modulus = E_MOD;
-    m.poisson_ratio = NU;
-    material_derive(&m);
-    return m;
+    return unit_material(kind, plane, E_MOD, NU);
 }
 
 static const char *label(const material *m)

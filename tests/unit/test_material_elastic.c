@@ -24,6 +24,7 @@
 #include <sys/stat.h>
 
 #include "unit_check.h"
+#include "unit_material.h"
 
 #define REL_TOL 1e-12
 
@@ -36,15 +37,7 @@ static int close_to(double a, double b, double scale)
 
 static material make_elastic(double E, double nu, material_plane plane)
 {
-    material m;
-    memset(&m, 0, sizeof m);
-    m.kind = MATERIAL_LINEAR_ELASTIC;
-    m.plane = plane;
-    m.density = 1000.0;
-    m.youngs_modulus = E;
-    m.poisson_ratio = nu;
-    material_derive(&m);
-    return m;
+    return unit_material(MATERIAL_LINEAR_ELASTIC, plane, E, nu);
 }
 
 static void check_stress(const double got[6], const double want[6], const char *what)
