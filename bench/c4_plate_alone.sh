@@ -6,15 +6,26 @@
 # Measured: T / dx = 8: 71.95 um, T / dx = 12: 71.25 um at 0.06 s, against the finite
 # elements' 70.66 um (+1.83 %, +0.84 %: second order) and plate theory's 68.60 um.
 #
-#   bench/c4_plate_alone.sh [OUT] [--n "8 12"]
+#   bench/c4_plate_alone.sh [OUT] [--n "8 12"] [--solver NAME] [--set section.key=value ...]
 #
+# --solver picks the solid model (default nosbpd); --set passes keys to every run.
 # About 1 min (T / dx = 8) and 8 min (12) on one core.
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 OUT="$ROOT/out/bench/c4_plate_alone"
 case "${1:-}" in "" | --*) ;; *) OUT="$1"; shift ;; esac
 LIST="8 12"
-if [ "${1:-}" = "--n" ]; then LIST="$2"; fi
+SOLVER=nosbpd
+SETS=()
+while [ $# -gt 0 ]; do
+  case "$1" in
+    --n) LIST="${2:?--n needs a list}"; shift ;;
+    --solver) SOLVER="${2:?--solver needs a name}"; shift ;;
+    --set) SETS+=(--set "${2:?--set needs section.key=value}"); shift ;;
+    *) echo "c4_plate_alone: unknown option $1" >&2; exit 2 ;;
+  esac
+  shift
+done
 mkdir -p "$OUT"
 PY=/usr/bin/python3
 for n in $LIST; do
@@ -28,7 +39,7 @@ output_interval = 0.01
 probe_interval = 1e-4
 
 [solid]
-solver = nosbpd
+solver = $SOLVER
 spacing = $dx
 density = 2700
 youngs_modulus = 67.5e9
@@ -64,7 +75,7 @@ force = 0, -19620
 [solid.probe mid]
 point = 0.5, -0.025
 CASE
-  "$ROOT/build/bin/fsi-run" "$OUT/t$n.ini" --out "$OUT/t$n" --force --threads 1 > "$OUT/t$n.txt" 2>&1
+  "$ROOT/build/bin/fsi-run" "$OUT/t$n.ini" --out "$OUT/t$n" --force --threads 1 "${SETS[@]}" > "$OUT/t$n.txt" 2>&1
 done
 (cd "$ROOT/bench" && "$PY" - "$OUT" $LIST <<'PY'
 import sys

@@ -9,6 +9,7 @@
 #include "pseudo_spring_keys.h"
 #include "run_keys.h"
 #include "solid_keys.h"
+#include "tlsph_keys.h"
 #include "ulph_keys.h"
 #include "wcsph_keys.h"
 
@@ -43,11 +44,34 @@ static const fsi_key_table *const wcsph_tables[] = {&fsi_fluid_common_keys};
 #define N_TABLES(a) ((int)(sizeof(a) / sizeof((a)[0])))
 
 /* Every solid model's semantic check: the geometry, the material's cross-key rules,
- * then the sub-step they give (each writes one line per problem). */
-static int solid_model_check(const fsi_case *c, const char *role, FILE *errors)
+ * what the model accepts of the integrator and the constitutive laws, then the
+ * sub-step they give (each writes one line per problem). */
+static int solid_model_check(const fsi_case *c, const char *role, FILE *errors,
+                             const solid_model_traits *traits)
 {
     int n = solid_geometry_check(c, role, errors) + material_case_check(c, role, errors);
+    n += solid_model_traits_check(c, role, traits, errors);
     return n + solid_step_check(c, role, errors);
+}
+
+static int nosbpd_check(const fsi_case *c, const char *role, FILE *errors)
+{
+    static const solid_model_traits t = {"nosbpd", 0, "bond failure and the stress update",
+                                         1, 1};
+    return solid_model_check(c, role, errors, &t);
+}
+
+static int pseudo_spring_check(const fsi_case *c, const char *role, FILE *errors)
+{
+    static const solid_model_traits t = {"pseudo_spring", 0,
+                                         "link failure, density and the stress update", 1, 0};
+    return solid_model_check(c, role, errors, &t);
+}
+
+static int tlsph_check(const fsi_case *c, const char *role, FILE *errors)
+{
+    static const solid_model_traits t = {"tlsph", 1, NULL, 0, 1};
+    return solid_model_check(c, role, errors, &t);
 }
 
 static const fsi_solver_spec solvers[] = {
@@ -66,7 +90,7 @@ static const fsi_solver_spec solvers[] = {
          "(solid_solver/nosbpd, docs/nosbpd.md).",
      .key_tables = solid_model_tables, .n_key_tables = N_TABLES(solid_model_tables),
      .own_keys = &fsi_nosbpd_keys, .objects = fsi_solid_object_kinds,
-     .n_objects = FSI_SOLID_N_OBJECT_KINDS, .check = solid_model_check},
+     .n_objects = FSI_SOLID_N_OBJECT_KINDS, .check = nosbpd_check},
     {.name = "pseudo_spring", .role = "solid", .executable = "fsi-solid-pseudo-spring",
      .description =
          "Pseudo-spring SPH (seed 004 section 3, Chakraborty & Shaw 2013): updated-Lagrangian "
@@ -75,7 +99,16 @@ static const fsi_solver_spec solvers[] = {
          "(solid_solver/pseudo_spring, docs/pseudo_spring.md).",
      .key_tables = solid_model_tables, .n_key_tables = N_TABLES(solid_model_tables),
      .own_keys = &fsi_pseudo_spring_keys, .objects = fsi_solid_object_kinds,
-     .n_objects = FSI_SOLID_N_OBJECT_KINDS, .check = solid_model_check},
+     .n_objects = FSI_SOLID_N_OBJECT_KINDS, .check = pseudo_spring_check},
+    {.name = "tlsph", .role = "solid", .executable = "fsi-solid-tlsph",
+     .description =
+         "Total-Lagrangian SPH (seed 003 section 2.2, Lin et al. 2015): reference-configuration "
+         "kernel gradients with the shape-matrix correction, first Piola-Kirchhoff stress, "
+         "linear elastic or hyperelastic materials, optional hourglass control, velocity "
+         "Verlet or RK4 (solid_solver/tlsph, docs/tlsph.md).",
+     .key_tables = solid_model_tables, .n_key_tables = N_TABLES(solid_model_tables),
+     .own_keys = &fsi_tlsph_keys, .objects = fsi_solid_object_kinds,
+     .n_objects = FSI_SOLID_N_OBJECT_KINDS, .check = tlsph_check},
     {.name = "ulph", .role = "fluid", .executable = "fsi-fluid-ulph",
      .description =
          "Updated Lagrangian Particle Hydrodynamics, a weakly compressible fluid with "

@@ -10,7 +10,7 @@ static double mass_of(const solid_particles *p, int i)
 }
 
 /* x, v, a of every mirrored point from its partner's (solid_integrate.h). */
-static void follow_partners(solid_particles *p)
+void solid_follow_partners(solid_particles *p)
 {
     if (!p->mirror)
         return;
@@ -67,7 +67,7 @@ void solid_acceleration(solid_particles *p, const solid_forces *f, const solid_i
             a[d] = (f->internal[k] + f->external[k]) * inv_m + in->gravity[d] - c * p->v[k];
         }
     }
-    follow_partners(p);
+    solid_follow_partners(p);
 }
 
 void solid_verlet_drift(solid_particles *p, double h, double *x_prev)
@@ -86,12 +86,36 @@ void solid_verlet_drift(solid_particles *p, double h, double *x_prev)
             p->x[k] += h * p->v[k];
         }
     }
-    follow_partners(p);
+    solid_follow_partners(p);
 }
 
 int solid_verlet_kick(solid_particles *p, const solid_forces *f, double h,
                       const solid_integrator *in, const double *x_prev, double *work,
                       solid_fault *fault)
+{
+    for (int i = 0; i < p->n; i++) {
+        if (p->flags[i] & SOLID_CLAMPED) {
+            for (int d = 0; d < FSI_DIM; d++)
+                p->v[i * FSI_DIM + d] = p->a[i * FSI_DIM + d] = 0.0;
+            continue;
+        }
+        double inv_m = 1.0 / mass_of(p, i), c = damping_of(in, i);
+        double shrink = 1.0 / (1.0 + 0.5 * c * h);
+        for (int d = 0; d < FSI_DIM; d++) {
+            int k = i * FSI_DIM + d;
+            double force = f->internal[k] + f->external[k];
+            double v = (p->v[k] + 0.5 * h * (force * inv_m + in->gravity[d])) * shrink;
+            p->v[k] = v;
+            p->a[k] = force * inv_m + in->gravity[d] - c * v;
+        }
+    }
+    solid_follow_partners(p);
+    return solid_step_end(p, f, h, in, x_prev, work, fault);
+}
+
+int solid_step_end(const solid_particles *p, const solid_forces *f, double h,
+                   const solid_integrator *in, const double *x_prev, double *work,
+                   solid_fault *fault)
 {
     double max_step2 = in->max_step * in->max_step;
     double dw = 0.0;
@@ -99,21 +123,13 @@ int solid_verlet_kick(solid_particles *p, const solid_forces *f, double h,
     fault->particle = -1;
     fault->what[0] = '\0';
     for (int i = 0; i < p->n; i++) {
-        if (p->flags[i] & SOLID_CLAMPED) {
-            for (int d = 0; d < FSI_DIM; d++)
-                p->v[i * FSI_DIM + d] = p->a[i * FSI_DIM + d] = 0.0;
+        if (p->flags[i] & SOLID_CLAMPED)
             continue;
-        }
-        double m = mass_of(p, i), inv_m = 1.0 / m, step2 = 0.0, c = damping_of(in, i);
-        double shrink = 1.0 / (1.0 + 0.5 * c * h);
+        double m = mass_of(p, i), step2 = 0.0;
         double c_interface = in->particle_damping ? in->particle_damping[i] : 0.0;
         int finite = 1;
         for (int d = 0; d < FSI_DIM; d++) {
             int k = i * FSI_DIM + d;
-            double force = f->internal[k] + f->external[k];
-            double v = (p->v[k] + 0.5 * h * (force * inv_m + in->gravity[d])) * shrink;
-            p->v[k] = v;
-            p->a[k] = force * inv_m + in->gravity[d] - c * v;
             double dx = p->x[k] - x_prev[k];
             step2 += dx * dx;
             double fe = f->external_prev ? 0.5 * (f->external_prev[k] + f->external[k])
@@ -121,7 +137,7 @@ int solid_verlet_kick(solid_particles *p, const solid_forces *f, double h,
             /* The interface impedance's -m c_i v is part of the fluid's force (its
              * m c_i u is in 'external'); the mass-proportional damping is not work. */
             dw += (fe + m * in->gravity[d] - m * c_interface * dx / h) * dx;
-            finite &= isfinite(p->x[k]) && isfinite(v) && isfinite(p->a[k]);
+            finite &= isfinite(p->x[k]) && isfinite(p->v[k]) && isfinite(p->a[k]);
         }
         /* Remember the first failure only, but finish the loop: the state stays
          * consistent for the message, and the caller stops anyway. */
@@ -136,7 +152,6 @@ int solid_verlet_kick(solid_particles *p, const solid_forces *f, double h,
                          h, in->max_step);
         }
     }
-    follow_partners(p);
     *work += dw;
     fault->particle = bad;
     return bad < 0 ? 0 : -1;

@@ -65,6 +65,17 @@ int solid_verlet_kick(solid_particles *p, const solid_forces *f, double h,
                       const solid_integrator *in, const double *x_prev, double *work,
                       solid_fault *fault);
 
+/* The checks and the work bookkeeping of solid_verlet_kick, for a step whose x, v
+ * and a are final (every integrator's last act): finite x, v, a and a displacement
+ * since x_prev of at most max_step for every unclamped point; the external forces'
+ * work over the step added to *work. Returns 0, or -1 with *fault set. */
+int solid_step_end(const solid_particles *p, const solid_forces *f, double h,
+                   const solid_integrator *in, const double *x_prev, double *work,
+                   solid_fault *fault);
+
+/* x, v, a of every mirrored point from its partner's. */
+void solid_follow_partners(solid_particles *p);
+
 /* Moves the internal force of every mirrored point onto its partner (f_m -= f_g,
  * f_g = 0: x_g depends on x_m with the Jacobian -I). Nothing without mirrored points. */
 void solid_mirror_forces(const solid_particles *p, double *internal);

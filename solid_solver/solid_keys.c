@@ -20,10 +20,15 @@ static const fsi_key_spec common_keys[] = {
      * unstable (docs/nosbpd.md, Stable step), so larger values test nothing more. */
     {"time_step_safety", FSI_KEY_REAL, "-", "0.8", FSI_BOUND_MIN_OPEN | FSI_BOUND_MAX, 0,
      SOLID_TIME_STEP_SAFETY_MAX, NULL,
-     "Fraction of the model's stable step used as the velocity-Verlet sub-step; each "
+     "Fraction of the model's stable step used as the integrator's sub-step; each "
      "coupling window is split into ceil(window / (time_step_safety * stable step)) equal "
      "sub-steps. Values above 1 (up to 4) go beyond the estimated stable step: the run "
      "warns at start-up and may stop as unstable."},
+    {"integrator", FSI_KEY_CHOICE, "-", "verlet", 0, 0, 0, "verlet|rk4",
+     "Time integrator of the sub-steps: verlet (velocity Verlet, 000 Eq. 55, one force "
+     "evaluation a step) or rk4 (classical fourth-order Runge-Kutta, 003 Eqs. 43-45, four); "
+     "rk4 only with a model whose force depends on the positions alone (tlsph), since its "
+     "trial stages would corrupt the committed state of nosbpd and pseudo_spring."},
     {"damping", FSI_KEY_REAL, "1/s", "0", FSI_BOUND_MIN, 0, 0, NULL,
      "Mass-proportional damping c: every point feels -c v per unit mass (treated implicitly, "
      "so any value is stable); use it to reach a static state, leave it 0 for dynamics."},

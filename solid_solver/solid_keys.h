@@ -51,4 +51,19 @@ int solid_geometry_check(const fsi_case *c, const char *role, FILE *errors);
  * One line per problem on 'errors'; returns how many. Defined in solid_step_check.c. */
 int solid_step_check(const fsi_case *c, const char *role, FILE *errors);
 
+/* What a solid model accepts of the shared keys, for its check hook. */
+typedef struct {
+    const char *model;      /* its solver name, for messages */
+    int stateless;          /* its force is a function of positions alone: RK4 allowed */
+    const char *state;      /* what it commits per evaluation (messages; NULL if none) */
+    int incremental;        /* takes drucker_prager (an incremental update) */
+    int total_form;         /* takes saint_venant_kirchhoff and neo_hookean (laws of F) */
+} solid_model_traits;
+
+/* integrator = rk4 with a model that commits state, and constitutive laws the model
+ * cannot evaluate. One line per problem on 'errors'; returns how many. Defined in
+ * solid_model_check.c. */
+int solid_model_traits_check(const fsi_case *c, const char *role,
+                             const solid_model_traits *t, FILE *errors);
+
 #endif

@@ -6,8 +6,9 @@
  *   setup   geometry (blocks, regions) -> particles, material density, the model,
  *           prescribed loads, initial velocity, probes, output file
  *   window  publish the surface state at t_k, read the fluid's loads (held over the
- *           window, serial-staggered), sub-cycle velocity Verlet (000 Eq. 55) in
- *           n = ceil(window / (safety * stable step)) equal sub-steps, check health
+ *           window, serial-staggered), sub-cycle the integrator (velocity Verlet, 000
+ *           Eq. 55, or RK4, 003 Eqs. 43-45, for models that allow trial evaluations)
+ *           in n = ceil(window / (safety * stable step)) equal sub-steps, check health
  *           after every sub-step and the energy after every window, probes, output,
  *           propose DBL_MAX (sub-cycling: the solid never limits the window)
  *
@@ -33,6 +34,7 @@
 #include "solid_loads.h"
 #include "solid_model.h"
 #include "solid_probes.h"
+#include "solid_rk4.h"
 #include "timers.h"
 
 #define ROLE "solid"
@@ -52,6 +54,8 @@ typedef struct {
     solid_probes probes;
     solid_interface_buffers iface;
     solid_integrator integrator;
+    int rk4;                        /* [solid] integrator = rk4 */
+    solid_rk4_state rk4_state;
     double safety, energy_limit;
     double *f_int, *f_ext, *f_ext_prev, *f_fluid, *p_fluid, *x_prev, *scratch;
     double *interface_damping;      /* per particle: z A / m [1/s] (solid_interface.h) */
@@ -71,7 +75,8 @@ typedef struct {
     fsi_h5_writer *out;
     fsi_timers timers;
     int t_force, t_integrate, t_exchange, t_output;
-    long substeps;                  /* velocity-Verlet sub-steps so far */
+    long substeps;                  /* integrator sub-steps so far */
+    long force_calls;               /* internal-force evaluations so far */
     char msg[512];
 } solid_run;
 
@@ -95,6 +100,7 @@ static void free_run(solid_run *s)
     solid_probes_free(&s->probes);
     solid_loads_free(&s->loads);
     solid_interface_free(&s->iface);
+    solid_rk4_free(&s->rk4_state);
     solid_particles_free(&s->p);
     solid_geometry_free(&s->geometry);
     free(s->f_int);
@@ -149,6 +155,12 @@ static int setup(solid_run *s, fsi_participant *part)
     if (fsi_case_get_vector(c, ROLE, "gravity", s->integrator.gravity) != 0)
         memset(s->integrator.gravity, 0, sizeof s->integrator.gravity);
     s->integrator.max_step = p->spacing;
+    const char *integrator = fsi_case_get(c, ROLE, "integrator");
+    s->rk4 = integrator && strcmp(integrator, "rk4") == 0;
+    if (s->rk4 && solid_rk4_init(&s->rk4_state, p->n) != 0) {
+        snprintf(s->msg, ms, "out of memory for the RK4 stages of %d solid particles", p->n);
+        return -1;
+    }
 
     s->f_int = new_vector(p->n, FSI_DIM);
     s->f_ext = new_vector(p->n, FSI_DIM);
@@ -192,6 +204,14 @@ static int setup(solid_run *s, fsi_participant *part)
     s->model = solid_model_create(c, p, s->msg, ms);
     if (!s->model)
         return -1;
+    /* The case check refuses this combination with file and line; this guards a case
+     * that skipped it. */
+    if (s->rk4 && !solid_model_stateless(s->model)) {
+        snprintf(s->msg, ms, "[solid] integrator = rk4: the %s model commits state in every "
+                 "force evaluation, which RK4's trial stages would corrupt; use verlet",
+                 fsi_case_get(c, ROLE, "solver"));
+        return -1;
+    }
     double stable = solid_model_stable_dt(s->model, p);
     if (!(stable > 0.0) || !isfinite(stable)) {
         snprintf(s->msg, ms, "the model's stable step is %g s: nothing can be integrated",
@@ -228,9 +248,9 @@ static int setup(solid_run *s, fsi_participant *part)
     if (unbreakable)
         fsi_info("%d particles in no_failure regions: their bonds do not break", unbreakable);
     fsi_info("%d particles (%d blocks, %d clamped, %d loaded), spacing %g m, mass %g, "
-             "stable step %g s (sub-step %g s), c0 = sqrt(K/rho) = %g m/s",
+             "stable step %g s (sub-step %g s, %s), c0 = sqrt(K/rho) = %g m/s",
              p->n, s->geometry.n_blocks, clamped, loaded, p->spacing, mass, stable,
-             s->safety * stable, c0);
+             s->safety * stable, s->rk4 ? "RK4" : "velocity Verlet", c0);
     /* Allowed (solid_keys.c) so that a stability limit can be probed, but nothing
      * guarantees a stable integration there: say so before the run, so that a later
      * "unstable" stop is not a surprise. */
@@ -289,7 +309,61 @@ static int exchange(solid_run *s, fsi_participant *part, double dt_last)
     return 0;
 }
 
-/* Velocity Verlet over one window [t0, t0 + dt] in equal sub-steps. */
+/* The internal force at the particles' positions (the model's, mirrored points'
+ * forces handed to their partners), timed and counted. */
+static int internal_force(solid_run *s, double t, double h)
+{
+    fsi_timer_start(&s->timers, s->t_force);
+    int rc = solid_model_internal_force(s->model, &s->p, s->x_prev, h, t, s->f_int, s->msg,
+                                        sizeof s->msg);
+    fsi_timer_stop(&s->timers, s->t_force);
+    s->force_calls++;
+    if (rc == 0)
+        solid_mirror_forces(&s->p, s->f_int);
+    return rc;
+}
+
+/* RK4's stage forces (solid_rk4_forces): internal at the stage's positions, external
+ * at its time. Only for stateless models (setup checks), so x_prev and the step
+ * mean nothing to the model. */
+static int rk4_forces(void *ctx, solid_particles *p, double t)
+{
+    solid_run *s = ctx;
+    (void)p;
+    if (internal_force(s, t, 0.0) != 0)
+        return -1;
+    external_forces(s, t, s->f_ext);
+    return 0;
+}
+
+/* The largest interface or mass-proportional damping rate [1/s]: RK4 treats it
+ * explicitly and needs c h below SOLID_RK4_MAX_DAMPING_STEP. */
+static double largest_damping(const solid_run *s)
+{
+    double c = 0.0;
+    for (int i = 0; i < s->p.n; i++)
+        c = fmax(c, s->interface_damping[i]);
+    return s->integrator.damping + c;
+}
+
+/* One sub-step [t - h, t] of velocity Verlet (000 Eq. 55). */
+static int verlet_substep(solid_run *s, solid_forces *forces, double t, double h,
+                          double *dw, solid_fault *fault)
+{
+    solid_particles *p = &s->p;
+    fsi_timer_start(&s->timers, s->t_integrate);
+    solid_verlet_drift(p, h, s->x_prev);
+    fsi_timer_stop(&s->timers, s->t_integrate);
+    if (internal_force(s, t, h) != 0)
+        return -2;
+    fsi_timer_start(&s->timers, s->t_integrate);
+    external_forces(s, t, s->f_ext);
+    int rc = solid_verlet_kick(p, forces, h, &s->integrator, s->x_prev, dw, fault);
+    fsi_timer_stop(&s->timers, s->t_integrate);
+    return rc;
+}
+
+/* The integrator over one window [t0, t0 + dt] in equal sub-steps. */
 static int advance(solid_run *s, double t0, double dt, int window)
 {
     solid_particles *p = &s->p;
@@ -303,6 +377,11 @@ static int advance(solid_run *s, double t0, double dt, int window)
 
     double stable = solid_model_stable_dt(s->model, p);
     double h_max = s->safety * stable;
+    if (s->rk4) {
+        const double c = largest_damping(s);
+        if (c > 0.0)
+            h_max = fmin(h_max, SOLID_RK4_MAX_DAMPING_STEP / c);
+    }
     if (!(h_max > 0.0) || !isfinite(h_max) || dt / h_max > (double)MAX_SUBSTEPS) {
         snprintf(s->msg, sizeof s->msg, "the model's stable step is %g s at t = %.9g s "
                  "(window %d): the window of %g s cannot be sub-cycled", stable, t0, window,
@@ -324,17 +403,27 @@ static int advance(solid_run *s, double t0, double dt, int window)
         }
     for (long j = 0; j < n; j++) {
         double t = t0 + dt * (double)(j + 1) / (double)n;
-        fsi_timer_start(&s->timers, s->t_integrate);
-        solid_verlet_drift(p, h, s->x_prev);
-        for (int k = 0; k < p->n * FSI_DIM; k++)
-            s->fluid_work += s->f_fluid[k] * (p->x[k] - s->x_prev[k]);
-        fsi_timer_stop(&s->timers, s->t_integrate);
-
-        fsi_timer_start(&s->timers, s->t_force);
-        int rc = solid_model_internal_force(s->model, p, s->x_prev, h, t, s->f_int, s->msg,
-                                            sizeof s->msg);
-        fsi_timer_stop(&s->timers, s->t_force);
-        if (rc != 0) {
+        /* f_ext_prev: the external forces at the sub-step's start (its work). */
+        double *swap = s->f_ext_prev;
+        s->f_ext_prev = s->f_ext;
+        s->f_ext = swap;
+        forces.external = s->f_ext;
+        forces.external_prev = s->f_ext_prev;
+        double dw = 0.0;
+        solid_fault fault;
+        int rc;
+        if (s->rk4) {
+            /* The stages' force evaluations are timed as internal_force; the rest of
+             * the step is integration. */
+            const double force0 = s->timers.seconds[s->t_force], wall0 = fsi_wall_seconds();
+            rc = solid_rk4_step(p, t - h, h, &s->integrator, &s->rk4_state, &forces, rk4_forces,
+                                s, s->x_prev, &dw, &fault);
+            s->timers.seconds[s->t_integrate] +=
+                fsi_wall_seconds() - wall0 - (s->timers.seconds[s->t_force] - force0);
+        } else {
+            rc = verlet_substep(s, &forces, t, h, &dw, &fault);
+        }
+        if (rc == -2) {
             /* The model names the point, its position and t; add the window and the
              * sub-step, as the integrator's and the energy check's messages do, so
              * every "unstable" stop can be placed in the same schedule. */
@@ -344,21 +433,10 @@ static int advance(solid_run *s, double t0, double dt, int window)
                          "%ld)", window, j + 1, n);
             return -1;
         }
-        solid_mirror_forces(p, s->f_int);
-
-        fsi_timer_start(&s->timers, s->t_integrate);
-        double *swap = s->f_ext_prev;
-        s->f_ext_prev = s->f_ext;
-        s->f_ext = swap;
-        external_forces(s, t, s->f_ext);
-        forces.external = s->f_ext;
-        forces.external_prev = s->f_ext_prev;
-        double dw = 0.0;
-        solid_fault fault;
-        rc = solid_verlet_kick(p, &forces, h, &s->integrator, s->x_prev, &dw, &fault);
+        for (int k = 0; k < p->n * FSI_DIM; k++)
+            s->fluid_work += s->f_fluid[k] * (p->x[k] - s->x_prev[k]);
         s->work += dw;
         s->work_in += fmax(dw, 0.0);
-        fsi_timer_stop(&s->timers, s->t_integrate);
         if (rc != 0) {
             char at[128];
             snprintf(s->msg, sizeof s->msg, "%s at particle %d %s at t = %.9g s (window %d, "
@@ -484,12 +562,16 @@ int main(void)
                      s.fluid_work);
         }
         /* One "bond update" is one directed bond through one internal-force call: the
-         * unit bench/solid_validation.sh reports (docs/performance.md). */
+         * unit bench/solid_validation.sh reports (docs/performance.md). Particle-steps
+         * count integrator steps over the internal force's time; with RK4 a step takes
+         * four evaluations. */
         const double force_s = s.timers.seconds[s.t_force];
-        const double updates = (double)solid_model_interaction_count(s.model) * (double)s.substeps;
-        fsi_info("performance: %ld sub-steps of %d particles and %lld interactions on %d "
-                 "thread(s); internal force %.3f s (%.4g interaction updates/s, %.4g "
-                 "particle-steps/s), integration %.3f s", s.substeps, s.p.n,
+        const double updates =
+            (double)solid_model_interaction_count(s.model) * (double)s.force_calls;
+        fsi_info("performance: %ld sub-steps (%s, %ld force evaluations) of %d particles and "
+                 "%lld interactions on %d thread(s); internal force %.3f s (%.4g interaction "
+                 "updates/s, %.4g particle-steps/s), integration %.3f s", s.substeps,
+                 s.rk4 ? "RK4" : "velocity Verlet", s.force_calls, s.p.n,
                  (long long)solid_model_interaction_count(s.model), omp_get_max_threads(),
                  force_s, force_s > 0.0 ? updates / force_s : 0.0,
                  force_s > 0.0 ? (double)s.p.n * (double)s.substeps / force_s : 0.0,

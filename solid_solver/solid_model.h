@@ -39,6 +39,13 @@ double solid_model_stable_dt(const solid_model *m, const solid_particles *p);
 int solid_model_internal_force(solid_model *m, const solid_particles *p, const double *x_prev,
                                double dt, double t, double *force, char *msg, size_t msg_size);
 
+/* 1 when the internal force is a function of the positions alone and a call commits
+ * nothing (total-Lagrangian models with a total-form material), so that a multi-stage
+ * integrator (RK4) may evaluate it at trial states it then throws away; 0 for models
+ * that commit state in every call (bonds that break, incremental stress, plastic
+ * state), which only take velocity Verlet's one evaluation per step. */
+int solid_model_stateless(const solid_model *m);
+
 /* Marks (1) the particles whose horizon is cut by a free surface or a crack: the
  * points the fluid can reach. Returns how many. */
 int solid_model_surface(const solid_model *m, const solid_particles *p, uint8_t *surface);

@@ -1,0 +1,288 @@
+/* The TLSPH solid behind solid_model.h: creation (keys, reference families, the
+ * corrected reference gradients of 003 Eqs. 35-36), the stable step, the surface set,
+ * output fields, the energy and the accessors of tlsph.h. The internal force is in
+ * tlsph_force.c, the hourglass control in tlsph_hourglass.c. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "cubic_spline.h"
+#include "solid_point_text.h"
+#include "tlsph_internal.h"
+#include "tlsph_keys.h"
+#include "wendland_c2.h"
+
+static const char *const SECTION = "solid";
+
+void solid_model_free(solid_model *m)
+{
+    if (!m)
+        return;
+    solid_bonds_free(&m->family);
+    free(m->reverse);
+    free(m->grad);
+    free(m->kernel_w);
+    free(m->ghost);
+    free(m->pk1);
+    free(m->defgrad);
+    free(m->stress);
+    free(m);
+}
+
+typedef struct {
+    int wendland;
+    cubic_spline_kernel cubic;
+    wendland_c2_kernel wendland_c2;
+} reference_kernel;
+
+/* W and F = (dW/dr) / r of the chosen kernel at squared distance r2. */
+static void kernel_eval(const reference_kernel *k, double r2, double *w, double *f)
+{
+    if (k->wendland)
+        wendland_c2_eval2(&k->wendland_c2, r2, w, f);
+    else
+        cubic_spline_eval2(&k->cubic, r2, w, f);
+}
+
+/* Reads the model's keys (defaults as fallbacks: unit tests may pass unvalidated
+ * cases; a validated case has had the key table's bounds checked with file and line).
+ * Returns 0, or -1 with msg. */
+static int read_keys(solid_model *m, reference_kernel *k, const fsi_case *c, char *msg,
+                     size_t msg_size)
+{
+    const char *own = fsi_case_solver_section(c, SECTION); /* [solid.tlsph] */
+    const char *kind = fsi_case_get(c, own, "kernel");
+    const double factor =
+        fsi_case_get_real(c, own, "smoothing_length_factor", TLSPH_DEFAULT_H_FACTOR);
+    m->courant = fsi_case_get_real(c, own, "courant_number", TLSPH_DEFAULT_COURANT);
+    m->hg_alpha = fsi_case_get_real(c, own, "hourglass_control", TLSPH_DEFAULT_HOURGLASS);
+    k->wendland = kind && strcmp(kind, "wendland_c2") == 0;
+    if ((kind && !k->wendland && strcmp(kind, "cubic_spline") != 0) ||
+        !(factor >= 1.0 && factor <= 3.0) || !(m->courant > 0.0 && m->courant <= 1.0) ||
+        !(m->hg_alpha >= 0.0 && m->hg_alpha <= 100.0)) {
+        snprintf(msg, msg_size, "[solid.tlsph] a key is out of range (kernel %s, "
+                 "smoothing_length_factor %g, courant_number %g, hourglass_control %g; "
+                 "docs/cases.md has the ranges)", kind ? kind : "(default)", factor,
+                 m->courant, m->hg_alpha);
+        return -1;
+    }
+    m->h = factor * m->dx;
+    const int rc = k->wendland ? wendland_c2_init(&k->wendland_c2, m->h)
+                               : cubic_spline_init(&k->cubic, m->h);
+    if (rc != 0) {
+        snprintf(msg, msg_size, "tlsph: smoothing length %g m is not usable", m->h);
+        return -1;
+    }
+    return 0;
+}
+
+/* 003 Eq. 35 for point i: K_i = sum_J V_J (X_J - X_i) (x) grad_0 W_iJ, and the
+ * corrected gradients g_iJ = K_i^-T grad_0 W_iJ of its family, for which
+ * sum_J V_J (X_J - X_i) (x) g_iJ = K_i K_i^-1 = I: F = I exactly in the reference
+ * configuration (Eq. 36), and every linear field's gradient is exact. (003 writes
+ * K_a^-1 grad W with K in the order of Eq. 35; the transpose is what makes Eq. 36
+ * reproduce F = I, and the two agree where K is symmetric, inside a lattice.)
+ * Returns 0, or -1 when K_i is singular or ill-conditioned. */
+static int shape_point(solid_model *m, const reference_kernel *k, int i)
+{
+    const solid_bonds *b = &m->family;
+    double kmat[FSI_MAT_SIZE], kinv[FSI_MAT_SIZE];
+    fsi_mat_zero(kmat);
+    for (int64_t q = b->offset[i]; q < b->offset[i + 1]; q++) {
+        const double *xi = b->xi + q * FSI_DIM;        /* X_J - X_i */
+        double w, f, gw[FSI_DIM];
+        kernel_eval(k, b->length[q] * b->length[q], &w, &f);
+        for (int d = 0; d < FSI_DIM; d++)
+            gw[d] = -f * xi[d];                        /* grad_i W = F(r) (X_i - X_J) */
+        m->kernel_w[q] = w;
+        memcpy(m->grad + q * FSI_DIM, gw, sizeof gw);
+        fsi_mat_add_outer(kmat, b->weight[q], xi, gw);
+    }
+    if (fsi_mat_inverse(kmat, kinv, TLSPH_MAX_CONDITION_K) != 0)
+        return -1;
+    for (int64_t q = b->offset[i]; q < b->offset[i + 1]; q++) {
+        double g[FSI_DIM];
+        for (int r = 0; r < FSI_DIM; r++) {
+            g[r] = 0.0;
+            for (int s = 0; s < FSI_DIM; s++)
+                g[r] += FSI_MAT(kinv, s, r) * m->grad[q * FSI_DIM + s];   /* K^-T */
+        }
+        memcpy(m->grad + q * FSI_DIM, g, sizeof g);
+    }
+    return 0;
+}
+
+#define ALLOC(ptr, count)                                                             \
+    do {                                                                              \
+        (ptr) = calloc((size_t)(count) > 0 ? (size_t)(count) : 1, sizeof *(ptr));     \
+        if (!(ptr))                                                                   \
+            goto out_of_memory;                                                       \
+    } while (0)
+
+solid_model *solid_model_create(const fsi_case *c, const solid_particles *p, char *msg,
+                                size_t msg_size)
+{
+    if (msg && msg_size)
+        msg[0] = '\0';
+    solid_model *m = calloc(1, sizeof *m);
+    if (!m) {
+        snprintf(msg, msg_size, "tlsph: out of memory creating the model");
+        return NULL;
+    }
+    if (material_from_case(&m->mat, c, SECTION, msg, msg_size) != 0) {
+        free(m);
+        return NULL;
+    }
+    if (m->mat.kind == MATERIAL_DRUCKER_PRAGER) {
+        snprintf(msg, msg_size, "[solid] constitutive: tlsph takes the total-form materials "
+                 "(linear_elastic, saint_venant_kirchhoff, neo_hookean), not drucker_prager, "
+                 "whose plastic flow needs an incremental update");
+        free(m);
+        return NULL;
+    }
+    m->n = p->n;
+    m->dx = p->spacing;
+    if (!(m->dx > 0.0)) {
+        snprintf(msg, msg_size, "tlsph: lattice spacing %g is not positive", m->dx);
+        free(m);
+        return NULL;
+    }
+    reference_kernel k;
+    if (read_keys(m, &k, c, msg, msg_size) != 0) {
+        free(m);
+        return NULL;
+    }
+    /* Every point within the support 2 h of the reference configuration. */
+    const double reach = 2.0 * m->h * (1.0 - 1e-9);
+    if (solid_bonds_build(&m->family, p->x0, p->volume, p->n, reach, m->dx) != 0) {
+        snprintf(msg, msg_size, "tlsph: cannot build the families of %d points (out of "
+                 "memory or a reference position is not finite)", p->n);
+        free(m);
+        return NULL;
+    }
+    m->full_count = solid_bonds_full_count(reach, m->dx);
+    const int n = p->n;
+    m->reverse = solid_bonds_reverse(&m->family);
+    if (!m->reverse)
+        goto out_of_memory;
+    ALLOC(m->grad, m->family.n_bonds * FSI_DIM);
+    ALLOC(m->kernel_w, m->family.n_bonds);
+    ALLOC(m->ghost, n);
+    ALLOC(m->pk1, (int64_t)n * FSI_MAT_SIZE);
+    ALLOC(m->defgrad, (int64_t)n * FSI_MAT_SIZE);
+    ALLOC(m->stress, (int64_t)n * 6);
+    double c_max = 0.0;
+    const double modulus = material_wave_modulus(&m->mat);
+    for (int i = 0; i < n; i++) {
+        m->ghost[i] = (p->flags[i] & SOLID_MIRRORED) != 0;
+        fsi_mat_identity(m->defgrad + (int64_t)i * FSI_MAT_SIZE);
+        c_max = fmax(c_max, sqrt(modulus / p->density[i]));
+        if (shape_point(m, &k, i) != 0) {
+            char where[160];
+            solid_describe_point(p, i, where, sizeof where);
+            snprintf(msg, msg_size, "tlsph: the shape matrix (003 Eq. 35) of %s is singular "
+                     "or ill-conditioned (%d neighbours within 2 h = %g m): its neighbours "
+                     "nearly lie on a line; a body needs at least two points across with "
+                     "h >= dx", where, (int)(m->family.offset[i + 1] - m->family.offset[i]),
+                     2.0 * m->h);
+            solid_model_free(m);
+            return NULL;
+        }
+    }
+    m->sound_speed = c_max;
+    return m;
+
+out_of_memory:
+    snprintf(msg, msg_size, "tlsph: out of memory for the state of %d points", p->n);
+    solid_model_free(m);
+    return NULL;
+}
+
+/* The SPH solid's CFL condition dt = C h / (c + |v|max) (Monaghan 1992 without the
+ * viscous term), c = sqrt(M / rho) the P-wave speed of the reference state; never
+ * above the lattice bound dx / c that solid_step_check.c estimates from. */
+double solid_model_stable_dt(const solid_model *m, const solid_particles *p)
+{
+    double v2 = 0.0;
+    for (int i = 0; i < p->n; i++) {
+        double s = 0.0;
+        for (int d = 0; d < FSI_DIM; d++)
+            s += p->v[i * FSI_DIM + d] * p->v[i * FSI_DIM + d];
+        v2 = fmax(v2, s);
+    }
+    const double c = m->sound_speed;
+    return fmin(m->courant * m->h / (c + sqrt(v2)), m->dx / c);
+}
+
+/* The internal force is a function of the positions alone (total Lagrangian, a
+ * total-form material, fixed families): nothing is committed per call, so a
+ * multi-stage integrator may evaluate it at trial states. */
+int solid_model_stateless(const solid_model *m)
+{
+    (void)m;
+    return 1;
+}
+
+int solid_model_surface(const solid_model *m, const solid_particles *p, uint8_t *surface)
+{
+    int count = 0;
+    for (int i = 0; i < p->n; i++) {
+        const int members = (int)(m->family.offset[i + 1] - m->family.offset[i]);
+        surface[i] = members < m->full_count && !m->ghost[i];
+        count += surface[i];
+    }
+    return count;
+}
+
+int solid_model_write_fields(const solid_model *m, fsi_h5_writer *out)
+{
+    const int n = m->n;
+    double *sigma = malloc((size_t)n * FSI_MAT_SIZE * sizeof *sigma);
+    double *jac = malloc((size_t)n * sizeof *jac);
+    int rc = -1;
+    if (sigma && jac) {
+        for (int i = 0; i < n; i++) {
+            const double *s6 = m->stress + (int64_t)i * 6;
+            fsi_sym6_to_mat(s6, sigma + (int64_t)i * FSI_MAT_SIZE);
+            jac[i] = fsi_mat_det(m->defgrad + (int64_t)i * FSI_MAT_SIZE);
+        }
+        rc = fsi_h5_write_field_real(out, "stress", sigma, FSI_MAT_SIZE) != 0 ||
+                     fsi_h5_write_field_real(out, "jacobian", jac, 1) != 0
+                 ? -1
+                 : 0;
+    }
+    free(sigma);
+    free(jac);
+    return rc;
+}
+
+/* Sum over material points of V0_i W(F_i) at the current positions, F_i of Eq. 36
+ * (mirrored clamp points are images and store nothing). For the hyperelastic
+ * materials this is the energy whose derivative the internal force is (less the
+ * hourglass control's pair forces, which are not derived from an energy); for
+ * linear_elastic (003's Hooke law on the Almansi strain) it is the small-strain
+ * energy, exact to second order. In index order (independent of the thread count). */
+double solid_model_strain_energy(const solid_model *m, const solid_particles *p)
+{
+    double total = 0.0;
+    for (int i = 0; i < m->n; i++) {
+        double w;
+        if (m->ghost[i])
+            continue;
+        if (tlsph_point_response(m, p->x, i, &w, NULL) != 0)
+            return INFINITY;    /* an inverted point: the energy check stops the run */
+        total += p->volume[i] * w;
+    }
+    return total;
+}
+
+int64_t solid_model_interaction_count(const solid_model *m)
+{
+    return m->family.n_bonds;
+}
+
+const solid_bonds *tlsph_families(const solid_model *m)
+{
+    return &m->family;
+}
