@@ -120,7 +120,7 @@ static int update_point(solid_model *m, const solid_particles *p, const double *
             }
         }
         double basis[NOSBPD_MAX_BASIS];
-        nosbpd_basis(xi_all + q * FSI_DIM, inv_delta, nb, basis);
+        solid_fit_basis(xi_all + q * FSI_DIM, inv_delta, nb, basis);
         const double w = weight[q];
         for (int r = 0; r < FSI_DIM; r++) {
             const double a1 = w * y1[r], a0 = w * y0[r];
@@ -216,7 +216,7 @@ static void gather_force(const solid_model *m, const solid_particles *p, int i, 
         const int j = nb_index[q];
         const double *dj = gather + (int64_t)j * stride;
         double basis[NOSBPD_MAX_BASIS];
-        nosbpd_basis(xi_all + q * FSI_DIM, inv_delta, nb, basis);
+        solid_fit_basis(xi_all + q * FSI_DIM, inv_delta, nb, basis);
         const double s = si + dj[FSI_DIM * nb];
         const double w = weight[q];
         for (int r = 0; r < FSI_DIM; r++) {

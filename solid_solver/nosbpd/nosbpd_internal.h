@@ -8,6 +8,7 @@
 #include "nosbpd.h"
 #include "nosbpd_bonds.h"
 #include "small_tensor.h"
+#include "solid_fit.h"
 #include "solid_model.h"
 
 /* Largest Frobenius condition number |K| |K^-1| of a usable shape tensor: beyond,
@@ -28,38 +29,10 @@
 /* Lines of per-point warnings on stderr before only a count is given. */
 #define NOSBPD_MAX_WARNINGS 20
 
-/* The deformation is fitted over each family in the basis b(xi) (nosbpd_basis):
+/* The deformation is fitted over each family in the basis b(xi) of solid_fit.h:
  * the bond vector xi (gradient_order = 1, 000 Eqs. 34, 36) or xi and its quadratic
- * monomials divided by delta (gradient_order = 2). NOSBPD_MAX_BASIS is the longer. */
-#if FSI_DIM == 2
-#define NOSBPD_MAX_BASIS 5
-#else
-#define NOSBPD_MAX_BASIS 9
-#endif
-
-/* b(xi) for a basis of nb = FSI_DIM (linear) or NOSBPD_MAX_BASIS (quadratic)
- * functions. The quadratic ones are scaled by 1 / delta so that every entry of the
- * moment matrix is of order delta^2 (its condition number then measures the
- * geometry of the family, not the units). */
-static inline void nosbpd_basis(const double *xi, double inv_delta, int nb, double *b)
-{
-    for (int d = 0; d < FSI_DIM; d++)
-        b[d] = xi[d];
-    if (nb == FSI_DIM)
-        return;
-#if FSI_DIM == 2
-    b[2] = xi[0] * xi[0] * inv_delta;
-    b[3] = xi[0] * xi[1] * inv_delta;
-    b[4] = xi[1] * xi[1] * inv_delta;
-#else
-    b[3] = xi[0] * xi[0] * inv_delta;
-    b[4] = xi[1] * xi[1] * inv_delta;
-    b[5] = xi[2] * xi[2] * inv_delta;
-    b[6] = xi[0] * xi[1] * inv_delta;
-    b[7] = xi[1] * xi[2] * inv_delta;
-    b[8] = xi[2] * xi[0] * inv_delta;
-#endif
-}
+ * monomials divided by delta (gradient_order = 2). */
+#define NOSBPD_MAX_BASIS SOLID_FIT_MAX_BASIS
 
 struct solid_model {
     material mat;

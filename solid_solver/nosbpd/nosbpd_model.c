@@ -286,7 +286,7 @@ double solid_model_strain_energy(const solid_model *m, const solid_particles *p)
                 if (!b->intact[q])
                     continue;
                 double basis[NOSBPD_MAX_BASIS];
-                nosbpd_basis(b->xi + q * FSI_DIM, inv_delta, nb, basis);
+                solid_fit_basis(b->xi + q * FSI_DIM, inv_delta, nb, basis);
                 const double *xj = p->x + (int64_t)b->neighbour[q] * FSI_DIM;
                 double z2 = 0.0;
                 for (int d = 0; d < FSI_DIM; d++) {

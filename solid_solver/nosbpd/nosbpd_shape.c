@@ -7,63 +7,6 @@
 
 #include "nosbpd_internal.h"
 
-/* Inverse of the symmetric n x n matrix a (n <= NOSBPD_MAX_BASIS) by Gauss-Jordan
- * elimination with partial pivoting. Returns 0, or -1 when a pivot vanishes or the
- * Frobenius condition number |A| |A^-1| exceeds max_condition. */
-static int moment_matrix_inverse(const double *a, int n, double *out, double max_condition)
-{
-    double w[NOSBPD_MAX_BASIS * NOSBPD_MAX_BASIS];
-    memcpy(w, a, sizeof(double) * (size_t)(n * n));
-    for (int r = 0; r < n; r++)
-        for (int c = 0; c < n; c++)
-            out[r * n + c] = r == c;
-    double norm_a = 0.0;
-    for (int k = 0; k < n * n; k++)
-        norm_a += a[k] * a[k];
-    norm_a = sqrt(norm_a);
-    for (int c = 0; c < n; c++) {
-        int pivot = c;
-        for (int r = c + 1; r < n; r++)
-            if (fabs(w[r * n + c]) > fabs(w[pivot * n + c]))
-                pivot = r;
-        if (!(fabs(w[pivot * n + c]) > 1e-300 * norm_a))
-            return -1;
-        if (pivot != c)
-            for (int k = 0; k < n; k++) {
-                double t = w[c * n + k];
-                w[c * n + k] = w[pivot * n + k];
-                w[pivot * n + k] = t;
-                t = out[c * n + k];
-                out[c * n + k] = out[pivot * n + k];
-                out[pivot * n + k] = t;
-            }
-        const double inv = 1.0 / w[c * n + c];
-        for (int k = 0; k < n; k++) {
-            w[c * n + k] *= inv;
-            out[c * n + k] *= inv;
-        }
-        for (int r = 0; r < n; r++) {
-            if (r == c || w[r * n + c] == 0.0)
-                continue;
-            const double f = w[r * n + c];
-            for (int k = 0; k < n; k++) {
-                w[r * n + k] -= f * w[c * n + k];
-                out[r * n + k] -= f * out[c * n + k];
-            }
-        }
-    }
-    double norm_inv = 0.0;
-    for (int k = 0; k < n * n; k++)
-        norm_inv += out[k] * out[k];
-    if (!(sqrt(norm_inv) * norm_a <= max_condition))
-        return -1;
-    /* Exactly symmetric, like A. */
-    for (int r = 0; r < n; r++)
-        for (int c = r + 1; c < n; c++)
-            out[r * n + c] = out[c * n + r] = 0.5 * (out[r * n + c] + out[c * n + r]);
-    return 0;
-}
-
 /* A^-1 of the quadratic fit of point i, or K^-1 padded with zeros (and the flag
  * NOSBPD_POINT_LINEAR_FIT) when the family cannot carry one or has a broken bond. */
 static void quadratic_fit_inverse(solid_model *m, int i, const double *k_inv, double *a_inv)
@@ -77,7 +20,7 @@ static void quadratic_fit_inverse(solid_model *m, int i, const double *k_inv, do
         if (!b->intact[q])
             continue;
         double v[NOSBPD_MAX_BASIS];
-        nosbpd_basis(b->xi + q * FSI_DIM, inv_delta, nb, v);
+        solid_fit_basis(b->xi + q * FSI_DIM, inv_delta, nb, v);
         for (int r = 0; r < nb; r++)
             for (int c = 0; c <= r; c++)
                 a[r * nb + c] += b->weight[q] * v[r] * v[c];
@@ -91,7 +34,7 @@ static void quadratic_fit_inverse(solid_model *m, int i, const double *k_inv, do
      * unstable once the crack branches). Damaged points keep the linear fit. */
     const int damaged = count < b->offset[i + 1] - b->offset[i];
     if (!damaged && count >= nb &&
-        moment_matrix_inverse(a, nb, a_inv, NOSBPD_MAX_CONDITION_FIT) == 0) {
+        solid_fit_inverse(a, nb, a_inv, NOSBPD_MAX_CONDITION_FIT) == 0) {
         m->flags[i] &= (uint8_t)~NOSBPD_POINT_LINEAR_FIT;
         return;
     }

@@ -7,6 +7,7 @@
 #include "material.h"
 #include "small_tensor.h"
 #include "solid_bonds.h"
+#include "solid_fit.h"
 #include "solid_model.h"
 #include "tlsph.h"
 
@@ -15,6 +16,10 @@
  * with h = 1.2 dx; a larger one means a family that nearly lies on a line (a body
  * one point thick), whose corrected gradient would amplify round-off. */
 #define TLSPH_MAX_CONDITION_K 1e3
+
+/* Largest condition number of the quadratic fit's moment matrix (gradient_order =
+ * 2) before a point keeps the linear fit (NOSB-PD's bound, nosbpd_internal.h). */
+#define TLSPH_MAX_CONDITION_FIT 1e6
 
 /* Below this many family members the point loops run on one thread (a fork and a
  * barrier cost more than the work; the results are the same either way). */
@@ -27,14 +32,16 @@ struct solid_model {
     double h;                   /* smoothing length [m] */
     double courant;
     double hg_alpha;            /* hourglass_control: Ganzenmueller's alpha */
+    int gradient_order;         /* 1: 003 Eq. 35's linear correction; 2: quadratic fit */
+    int linear_fit_points;      /* points whose family cannot carry the quadratic fit */
     double sound_speed;         /* sqrt(M / rho0), the largest over the points [m/s] */
     int full_count;             /* family members of a point deep inside the lattice */
 
     /* Reference families within 2 h (weight = V_J), fixed for good. */
     solid_bonds family;
     int64_t *reverse;           /* per bond I -> J: the slot of J -> I */
-    /* Per bond I -> J: the corrected reference gradient g_IJ = K_I^-T grad_0 W_IJ
-     * (FSI_DIM each, Eq. 35-36) and the kernel value W_IJ (hourglass control). */
+    /* Per bond I -> J: the corrected reference gradient g_IJ (FSI_DIM each: K_I^-T
+     * grad_0 W_IJ of Eqs. 35-36, or the quadratic fit's, tlsph_model.c) and the kernel value W_IJ (hourglass control). */
     double *grad;
     double *kernel_w;
 

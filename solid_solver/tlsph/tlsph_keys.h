@@ -6,12 +6,13 @@
 
 #include "case_file.h"
 
-/* kernel, smoothing_length_factor, courant_number, hourglass_control. */
+/* kernel, smoothing_length_factor, gradient_order, courant_number, hourglass_control. */
 extern const fsi_key_table fsi_tlsph_keys;
 
 /* Defaults, shared with solid_model_create's fallbacks for unvalidated cases. */
 #define TLSPH_DEFAULT_H_FACTOR 1.2      /* 003 §2.1: h = 1.2 dx */
 #define TLSPH_DEFAULT_COURANT 0.5
 #define TLSPH_DEFAULT_HOURGLASS 0.0
+#define TLSPH_DEFAULT_GRADIENT_ORDER 2  /* 1 is 003 Eq. 35 (docs/tlsph.md) */
 
 #endif

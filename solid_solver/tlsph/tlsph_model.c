@@ -57,14 +57,18 @@ static int read_keys(solid_model *m, reference_kernel *k, const fsi_case *c, cha
         fsi_case_get_real(c, own, "smoothing_length_factor", TLSPH_DEFAULT_H_FACTOR);
     m->courant = fsi_case_get_real(c, own, "courant_number", TLSPH_DEFAULT_COURANT);
     m->hg_alpha = fsi_case_get_real(c, own, "hourglass_control", TLSPH_DEFAULT_HOURGLASS);
+    m->gradient_order = (int)fsi_case_get_real(c, own, "gradient_order",
+                                               TLSPH_DEFAULT_GRADIENT_ORDER);
     k->wendland = kind && strcmp(kind, "wendland_c2") == 0;
     if ((kind && !k->wendland && strcmp(kind, "cubic_spline") != 0) ||
         !(factor >= 1.0 && factor <= 3.0) || !(m->courant > 0.0 && m->courant <= 1.0) ||
-        !(m->hg_alpha >= 0.0 && m->hg_alpha <= 100.0)) {
+        !(m->hg_alpha >= 0.0 && m->hg_alpha <= 100.0) ||
+        !(m->gradient_order == 1 || m->gradient_order == 2)) {
         snprintf(msg, msg_size, "[solid.tlsph] a key is out of range (kernel %s, "
-                 "smoothing_length_factor %g, courant_number %g, hourglass_control %g; "
-                 "docs/cases.md has the ranges)", kind ? kind : "(default)", factor,
-                 m->courant, m->hg_alpha);
+                 "smoothing_length_factor %g, courant_number %g, hourglass_control %g, "
+                 "gradient_order %d; docs/cases.md has the ranges)",
+                 kind ? kind : "(default)", factor, m->courant, m->hg_alpha,
+                 m->gradient_order);
         return -1;
     }
     m->h = factor * m->dx;
@@ -82,31 +86,54 @@ static int read_keys(solid_model *m, reference_kernel *k, const fsi_case *c, cha
  * sum_J V_J (X_J - X_i) (x) g_iJ = K_i K_i^-1 = I: F = I exactly in the reference
  * configuration (Eq. 36), and every linear field's gradient is exact. (003 writes
  * K_a^-1 grad W with K in the order of Eq. 35; the transpose is what makes Eq. 36
- * reproduce F = I, and the two agree where K is symmetric, inside a lattice.)
- * Returns 0, or -1 when K_i is singular or ill-conditioned. */
+ * reproduce F = I. Since grad_0 W_iJ = omega xi with omega = -(dW/dr) / r >= 0 and
+ * xi = X_J - X_i, K_i = sum V omega xi xi^T is symmetric and g_iJ = K^-1 omega xi: the
+ * gradient of the weighted least-squares linear fit of the family's motion.)
+ * gradient_order = 2 fits the quadratic monomials too (solid_fit.h, weights omega V):
+ * g_iJ = the first FSI_DIM rows of A_i^-1 omega b(xi), A_i = sum V omega b b^T. It
+ * still gives F = I at rest and exact linear gradients, and also exact gradients of
+ * quadratic fields where the family is one-sided (near a surface, where bending puts
+ * the largest strains); a family that cannot carry the quadratic fit keeps the linear
+ * one. Returns 0, or -1 when K_i is singular or ill-conditioned. */
 static int shape_point(solid_model *m, const reference_kernel *k, int i)
 {
     const solid_bonds *b = &m->family;
     double kmat[FSI_MAT_SIZE], kinv[FSI_MAT_SIZE];
+    double a[SOLID_FIT_MAX_BASIS * SOLID_FIT_MAX_BASIS] = {0};
+    double a_inv[SOLID_FIT_MAX_BASIS * SOLID_FIT_MAX_BASIS];
+    const int nb = m->gradient_order == 2 ? SOLID_FIT_MAX_BASIS : FSI_DIM;
+    const double inv_support = 1.0 / (2.0 * m->h);
     fsi_mat_zero(kmat);
     for (int64_t q = b->offset[i]; q < b->offset[i + 1]; q++) {
         const double *xi = b->xi + q * FSI_DIM;        /* X_J - X_i */
-        double w, f, gw[FSI_DIM];
+        double w, f, basis[SOLID_FIT_MAX_BASIS];
         kernel_eval(k, b->length[q] * b->length[q], &w, &f);
-        for (int d = 0; d < FSI_DIM; d++)
-            gw[d] = -f * xi[d];                        /* grad_i W = F(r) (X_i - X_J) */
         m->kernel_w[q] = w;
-        memcpy(m->grad + q * FSI_DIM, gw, sizeof gw);
-        fsi_mat_add_outer(kmat, b->weight[q], xi, gw);
+        m->grad[q * FSI_DIM] = -f;                     /* omega, for the pass below */
+        fsi_mat_add_outer(kmat, -f * b->weight[q], xi, xi);
+        solid_fit_basis(xi, inv_support, nb, basis);
+        for (int r = 0; r < nb; r++)
+            for (int c = 0; c < nb; c++)
+                a[r * nb + c] += -f * b->weight[q] * basis[r] * basis[c];
     }
     if (fsi_mat_inverse(kmat, kinv, TLSPH_MAX_CONDITION_K) != 0)
         return -1;
+    const int quadratic =
+        nb > FSI_DIM && solid_fit_inverse(a, nb, a_inv, TLSPH_MAX_CONDITION_FIT) == 0;
+    m->linear_fit_points += nb > FSI_DIM && !quadratic;
     for (int64_t q = b->offset[i]; q < b->offset[i + 1]; q++) {
-        double g[FSI_DIM];
+        const double *xi = b->xi + q * FSI_DIM;
+        const double omega = m->grad[q * FSI_DIM];
+        double g[FSI_DIM], basis[SOLID_FIT_MAX_BASIS];
+        solid_fit_basis(xi, inv_support, nb, basis);
         for (int r = 0; r < FSI_DIM; r++) {
             g[r] = 0.0;
-            for (int s = 0; s < FSI_DIM; s++)
-                g[r] += FSI_MAT(kinv, s, r) * m->grad[q * FSI_DIM + s];   /* K^-T */
+            if (quadratic)
+                for (int s = 0; s < nb; s++)
+                    g[r] += a_inv[r * nb + s] * omega * basis[s];
+            else
+                for (int s = 0; s < FSI_DIM; s++)
+                    g[r] += FSI_MAT(kinv, r, s) * omega * xi[s];
         }
         memcpy(m->grad + q * FSI_DIM, g, sizeof g);
     }
@@ -191,6 +218,9 @@ solid_model *solid_model_create(const fsi_case *c, const solid_particles *p, cha
         }
     }
     m->sound_speed = c_max;
+    if (m->linear_fit_points > 0)
+        fprintf(stderr, "tlsph: %d points keep the linear fit (their family cannot carry "
+                "the quadratic one of gradient_order = 2)\n", m->linear_fit_points);
     return m;
 
 out_of_memory:
