@@ -9,9 +9,9 @@
  * and a central pair force of the material's own stiffness restores the prediction:
  *     f_i += -alpha/2 E V_i V_j W_ij (delta_i + delta_j) / |X_ij|^2 e_ij,
  * equal and opposite on j (both momenta conserved). It is zero for every affine field
- * (F_i = F_j = F, x_ij = F X_ij). An image (mirrored clamp point) has no F of its own:
- * a pair with one image end uses the material end's delta twice; two images do not
- * interact. */
+ * (F_i = F_j = F, x_ij = F X_ij). Images (mirrored clamp points) are not material and
+ * take no part. The force is not the derivative of an energy and can feed energy into
+ * a body near its clamps (docs/tlsph.md, "Hourglass control"): it is off by default. */
 #include <math.h>
 
 #include "tlsph_internal.h"
@@ -33,7 +33,7 @@ void tlsph_hourglass_force(const solid_model *m, const solid_particles *p, int i
     const double scale = -0.5 * m->hg_alpha * m->mat.youngs_modulus * p->volume[i];
     for (int64_t q = b->offset[i]; q < b->offset[i + 1]; q++) {
         const int j = b->neighbour[q];
-        if (m->ghost[i] && m->ghost[j])
+        if (m->ghost[i] || m->ghost[j])
             continue;
         const double *xref = b->xi + q * FSI_DIM;
         double x[FSI_DIM], e[FSI_DIM], r2 = 0.0;
@@ -47,9 +47,8 @@ void tlsph_hourglass_force(const solid_model *m, const solid_particles *p, int i
         for (int d = 0; d < FSI_DIM; d++)
             e[d] = x[d] / r;
         const double *fj = m->defgrad + (int64_t)j * FSI_MAT_SIZE;
-        const double di = m->ghost[i] ? 0.0 : predicted_mismatch(fi, xref, x, e);
-        const double dj = m->ghost[j] ? 0.0 : predicted_mismatch(fj, xref, x, e);
-        const double sum = m->ghost[i] ? 2.0 * dj : (m->ghost[j] ? 2.0 * di : di + dj);
+        const double sum =
+            predicted_mismatch(fi, xref, x, e) + predicted_mismatch(fj, xref, x, e);
         const double s = scale * b->weight[q] * m->kernel_w[q] * sum /
                          (b->length[q] * b->length[q]);
         for (int d = 0; d < FSI_DIM; d++)
