@@ -83,6 +83,19 @@ def snapshots(run_dir, png, dx):
     print(f"snapshots: {png}")
 
 
+def material_text(case):
+    """', neo_hookean, E = 7.8 MPa' for a gate that is not the case's linear elastic one
+    of E = 12 MPa, nu = 0.4 (empty for that one): the legend of runs that differ only
+    in the material."""
+    solid = case["solid"]
+    law = solid.get("constitutive", "linear_elastic")
+    text = "" if law == "linear_elastic" else f", {law}"
+    e, nu = float(solid["youngs_modulus"]), float(solid["poisson_ratio"])
+    if abs(e - 12e6) > 1.0 or abs(nu - 0.4) > 1e-9:
+        text += f", E = {e / 1e6:g} MPa, nu = {nu:g}"
+    return text
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("runs", nargs="+")
@@ -107,7 +120,8 @@ def main():
         peak = {k: (float(u[k].max()), float(t[int(np.argmax(u[k]))])) for k in u}
         ended = t[-1] >= float(case["run"]["end_time"]) - 1e-9
         results.append(dict(run=run, dx=dx, t=t, u=u, err=err, nf=nf, ng=ng, nc=nc, peak=peak,
-                            ended=ended, solvers=fsi_results.solvers(run)))
+                            ended=ended, solvers=fsi_results.solvers(run),
+                            material=material_text(case)))
         print(f"{run} dx={dx:.6g} T/dx={THICKNESS / dx:.1f} fluid={nf} solid={ng}+{nc} "
               f"t_end={t[-1]:.4f} nrmse_x={err['x'][0]:.4f} ({err['x'][1]} points) "
               f"nrmse_y={err['y'][0]:.4f} ({err['y'][1]} points) "
@@ -138,7 +152,7 @@ def main():
         fig, axes = plt.subplots(1, 2, figsize=(11, 4.4))
         for ax, k, what in zip(axes, ("x", "y"), ("horizontal (downstream)", "vertical (lift)")):
             for r in results:
-                lab = f"{r['solvers']} T/dx = {THICKNESS / r['dx']:.0f}"
+                lab = f"{r['solvers']}{r['material']} T/dx = {THICKNESS / r['dx']:.0f}"
                 if r["ended"]:
                     lab += f", NRMSE {100 * r['err'][k][0]:.1f} %"
                 if not r["ended"]:
