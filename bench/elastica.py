@@ -46,7 +46,8 @@ with E / (1 - nu^2), 10 % stiffer at nu = 0.3).
     /usr/bin/python3 bench/elastica.py --length 0.0995   the same load at 0.0995 m
     /usr/bin/python3 bench/elastica.py --alpha 0.5       dimensionless only
     /usr/bin/python3 bench/elastica.py --check           the checks above
-    /usr/bin/python3 bench/elastica.py --length A --quiet   prints "dv dh" [m]
+    /usr/bin/python3 bench/elastica.py --length A --quiet   prints "dv dh dv_R dh_R" [m]
+                                                  (elastica, then Reissner's beam)
 """
 import argparse
 import math
@@ -181,7 +182,7 @@ def main():
     ap.add_argument("--poisson", type=float, default=POISSON, help="nu, for the shear modulus (0.3)")
     ap.add_argument("--load", type=float, default=FORCE / WIDTH,
                     help="tip force per unit width [N/m] (1750 N / 0.001 m = 1.75e6)")
-    ap.add_argument("--quiet", action="store_true", help='print only "delta_v delta_h" [m]')
+    ap.add_argument("--quiet", action="store_true", help='print only "delta_v delta_h" [m] of the elastica and of Reissner\'s beam')
     args = ap.parse_args()
     if args.check:
         sys.exit(0 if check() else 1)
@@ -193,10 +194,10 @@ def main():
     length = args.length
     alpha, e, g = beam_parameters(length, args.thickness, args.youngs, args.poisson, args.load)
     dv, dh, t0 = solve(alpha)
-    if args.quiet:
-        print(f"{dv * length:.9e} {dh * length:.9e}")
-        return
     rv, rh, _ = solve(alpha, e, g)
+    if args.quiet:
+        print(" ".join(f"{v * length:.9e}" for v in (dv, dh, rv, rh)))
+        return
     lin = alpha / 3
     print(f"beam: lever arm L = {length:g} m, T = {args.thickness:g} m, E = {args.youngs:g} Pa, "
           f"nu = {args.poisson:g}, load {args.load:g} N/m (per unit width, plane stress)")
