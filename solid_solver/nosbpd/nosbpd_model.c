@@ -11,6 +11,7 @@
 #include "nosbpd_internal.h"
 #include "nosbpd_keys.h"
 #include "nosbpd_stabilisation.h"
+#include "solid_model_setup.h"
 
 static const char *const SECTION = "solid";
 
@@ -101,13 +102,6 @@ static int read_keys(solid_model *m, const fsi_case *c, char *msg, size_t msg_si
     return 0;
 }
 
-#define ALLOC(ptr, count)                                                             \
-    do {                                                                              \
-        (ptr) = calloc((size_t)(count) > 0 ? (size_t)(count) : 1, sizeof *(ptr));     \
-        if (!(ptr))                                                                   \
-            goto out_of_memory;                                                       \
-    } while (0)
-
 /* Silling & Askari 2005 bound dt < sqrt(2 rho / sum_J V_J C_IJ), with the bond
  * stiffness C_IJ = c / |xi| of the bond-based material of the same bulk modulus
  * (standing in for the correspondence force state) plus 2 G C_w omega of the
@@ -135,24 +129,16 @@ static double stable_step(const solid_model *m, const solid_particles *p)
 solid_model *solid_model_create(const fsi_case *c, const solid_particles *p, char *msg,
                                 size_t msg_size)
 {
-    if (msg && msg_size)
-        msg[0] = '\0';
     solid_model *m = calloc(1, sizeof *m);
     if (!m) {
         snprintf(msg, msg_size, "nosbpd: out of memory creating the model");
         return NULL;
     }
-    if (material_from_case(&m->mat, c, SECTION, msg, msg_size) != 0) {
+    if (solid_model_setup(&m->mat, &m->dx, c, p, "nosbpd", msg, msg_size) != 0) {
         free(m);
         return NULL;
     }
     m->n = p->n;
-    m->dx = p->spacing;
-    if (!(m->dx > 0.0)) {
-        snprintf(msg, msg_size, "nosbpd: lattice spacing %g is not positive", m->dx);
-        free(m);
-        return NULL;
-    }
     if (read_keys(m, c, msg, msg_size) != 0) {
         free(m);
         return NULL;
@@ -171,21 +157,21 @@ solid_model *solid_model_create(const fsi_case *c, const solid_particles *p, cha
         return NULL;
     }
     const int n = p->n;
-    ALLOC(m->k_inv, (int64_t)n * FSI_MAT_SIZE);
-    ALLOC(m->moment_inv, (int64_t)n * m->n_basis * m->n_basis);
-    ALLOC(m->fit, (int64_t)n * FSI_DIM * m->n_basis);
-    ALLOC(m->defgrad, (int64_t)n * FSI_MAT_SIZE);
-    ALLOC(m->gather, (int64_t)n * m->gather_stride);
-    ALLOC(m->stress, (int64_t)n * 6);
-    ALLOC(m->mstate, n);
-    ALLOC(m->work, n);
-    ALLOC(m->thickness_stretch, n);
-    ALLOC(m->family_volume, n);
-    ALLOC(m->damage, n);
-    ALLOC(m->intact_count, n);
-    ALLOC(m->flags, n);
-    ALLOC(m->scratch, (int64_t)n * FSI_MAT_SIZE);
-    ALLOC(m->iscratch, n);
+    SOLID_ALLOC(m->k_inv, (int64_t)n * FSI_MAT_SIZE);
+    SOLID_ALLOC(m->moment_inv, (int64_t)n * m->n_basis * m->n_basis);
+    SOLID_ALLOC(m->fit, (int64_t)n * FSI_DIM * m->n_basis);
+    SOLID_ALLOC(m->defgrad, (int64_t)n * FSI_MAT_SIZE);
+    SOLID_ALLOC(m->gather, (int64_t)n * m->gather_stride);
+    SOLID_ALLOC(m->stress, (int64_t)n * 6);
+    SOLID_ALLOC(m->mstate, n);
+    SOLID_ALLOC(m->work, n);
+    SOLID_ALLOC(m->thickness_stretch, n);
+    SOLID_ALLOC(m->family_volume, n);
+    SOLID_ALLOC(m->damage, n);
+    SOLID_ALLOC(m->intact_count, n);
+    SOLID_ALLOC(m->flags, n);
+    SOLID_ALLOC(m->scratch, (int64_t)n * FSI_MAT_SIZE);
+    SOLID_ALLOC(m->iscratch, n);
 
     m->full = nosbpd_full_family_of_lattice(m->delta, m->dx, m->influence);
     m->stab_modulus =

@@ -8,6 +8,7 @@
 
 #include "pseudo_spring_internal.h"
 #include "pseudo_spring_keys.h"
+#include "solid_model_setup.h"
 
 static const char *const SECTION = "solid";
 
@@ -87,24 +88,15 @@ static int read_keys(solid_model *m, const fsi_case *c, char *msg, size_t msg_si
     return 0;
 }
 
-#define ALLOC(ptr, count)                                                             \
-    do {                                                                              \
-        (ptr) = calloc((size_t)(count) > 0 ? (size_t)(count) : 1, sizeof *(ptr));     \
-        if (!(ptr))                                                                   \
-            goto out_of_memory;                                                       \
-    } while (0)
-
 solid_model *solid_model_create(const fsi_case *c, const solid_particles *p, char *msg,
                                 size_t msg_size)
 {
-    if (msg && msg_size)
-        msg[0] = '\0';
     solid_model *m = calloc(1, sizeof *m);
     if (!m) {
         snprintf(msg, msg_size, "pseudo_spring: out of memory creating the model");
         return NULL;
     }
-    if (material_from_case(&m->mat, c, SECTION, msg, msg_size) != 0) {
+    if (solid_model_setup(&m->mat, &m->dx, c, p, "pseudo_spring", msg, msg_size) != 0) {
         free(m);
         return NULL;
     }
@@ -120,12 +112,6 @@ solid_model *solid_model_create(const fsi_case *c, const solid_particles *p, cha
         return NULL;
     }
     m->n = p->n;
-    m->dx = p->spacing;
-    if (!(m->dx > 0.0)) {
-        snprintf(msg, msg_size, "pseudo_spring: lattice spacing %g is not positive", m->dx);
-        free(m);
-        return NULL;
-    }
     if (read_keys(m, c, msg, msg_size) != 0) {
         free(m);
         return NULL;
@@ -144,26 +130,26 @@ solid_model *solid_model_create(const fsi_case *c, const solid_particles *p, cha
     m->reverse = solid_bonds_reverse(&m->links);
     if (!m->reverse)
         goto out_of_memory;     /* the rows are symmetric: no bond lacks its reverse */
-    ALLOC(m->link_f, m->links.n_bonds);
+    SOLID_ALLOC(m->link_f, m->links.n_bonds);
     if (m->art_stress > 0.0) {
         /* 004 Eq. 16 is on: R per point, P^a per link (else neither, and no pow). */
-        ALLOC(m->link_art, m->links.n_bonds);
-        ALLOC(m->art_r, n);
+        SOLID_ALLOC(m->link_art, m->links.n_bonds);
+        SOLID_ALLOC(m->art_r, n);
     }
-    ALLOC(m->mass, n);
-    ALLOC(m->density, n);
-    ALLOC(m->density_next, n);
-    ALLOC(m->stress, (int64_t)n * 6);
-    ALLOC(m->mstate, n);
-    ALLOC(m->work, n);
-    ALLOC(m->thickness_stretch, n);
-    ALLOC(m->gather, (int64_t)n * FSI_MAT_SIZE);
-    ALLOC(m->hourglass, (int64_t)n * PS_HOURGLASS_STRIDE);
-    ALLOC(m->damage, n);
-    ALLOC(m->initial_count, n);
-    ALLOC(m->intact_count, n);
-    ALLOC(m->flags, n);
-    ALLOC(m->scratch, (int64_t)n * FSI_MAT_SIZE);
+    SOLID_ALLOC(m->mass, n);
+    SOLID_ALLOC(m->density, n);
+    SOLID_ALLOC(m->density_next, n);
+    SOLID_ALLOC(m->stress, (int64_t)n * 6);
+    SOLID_ALLOC(m->mstate, n);
+    SOLID_ALLOC(m->work, n);
+    SOLID_ALLOC(m->thickness_stretch, n);
+    SOLID_ALLOC(m->gather, (int64_t)n * FSI_MAT_SIZE);
+    SOLID_ALLOC(m->hourglass, (int64_t)n * PS_HOURGLASS_STRIDE);
+    SOLID_ALLOC(m->damage, n);
+    SOLID_ALLOC(m->initial_count, n);
+    SOLID_ALLOC(m->intact_count, n);
+    SOLID_ALLOC(m->flags, n);
+    SOLID_ALLOC(m->scratch, (int64_t)n * FSI_MAT_SIZE);
     for (int i = 0; i < n; i++) {
         m->initial_count[i] = (int32_t)(m->links.offset[i + 1] - m->links.offset[i]);
         m->mass[i] = p->density[i] * p->volume[i];

@@ -9,6 +9,7 @@
 
 #include "cubic_spline.h"
 #include "solid_point_text.h"
+#include "solid_model_setup.h"
 #include "tlsph_internal.h"
 #include "tlsph_keys.h"
 #include "wendland_c2.h"
@@ -140,24 +141,15 @@ static int shape_point(solid_model *m, const reference_kernel *k, int i)
     return 0;
 }
 
-#define ALLOC(ptr, count)                                                             \
-    do {                                                                              \
-        (ptr) = calloc((size_t)(count) > 0 ? (size_t)(count) : 1, sizeof *(ptr));     \
-        if (!(ptr))                                                                   \
-            goto out_of_memory;                                                       \
-    } while (0)
-
 solid_model *solid_model_create(const fsi_case *c, const solid_particles *p, char *msg,
                                 size_t msg_size)
 {
-    if (msg && msg_size)
-        msg[0] = '\0';
     solid_model *m = calloc(1, sizeof *m);
     if (!m) {
         snprintf(msg, msg_size, "tlsph: out of memory creating the model");
         return NULL;
     }
-    if (material_from_case(&m->mat, c, SECTION, msg, msg_size) != 0) {
+    if (solid_model_setup(&m->mat, &m->dx, c, p, "tlsph", msg, msg_size) != 0) {
         free(m);
         return NULL;
     }
@@ -169,12 +161,6 @@ solid_model *solid_model_create(const fsi_case *c, const solid_particles *p, cha
         return NULL;
     }
     m->n = p->n;
-    m->dx = p->spacing;
-    if (!(m->dx > 0.0)) {
-        snprintf(msg, msg_size, "tlsph: lattice spacing %g is not positive", m->dx);
-        free(m);
-        return NULL;
-    }
     reference_kernel k;
     if (read_keys(m, &k, c, msg, msg_size) != 0) {
         free(m);
@@ -193,12 +179,12 @@ solid_model *solid_model_create(const fsi_case *c, const solid_particles *p, cha
     m->reverse = solid_bonds_reverse(&m->family);
     if (!m->reverse)
         goto out_of_memory;
-    ALLOC(m->grad, m->family.n_bonds * FSI_DIM);
-    ALLOC(m->kernel_w, m->family.n_bonds);
-    ALLOC(m->ghost, n);
-    ALLOC(m->pk1, (int64_t)n * FSI_MAT_SIZE);
-    ALLOC(m->defgrad, (int64_t)n * FSI_MAT_SIZE);
-    ALLOC(m->stress, (int64_t)n * 6);
+    SOLID_ALLOC(m->grad, m->family.n_bonds * FSI_DIM);
+    SOLID_ALLOC(m->kernel_w, m->family.n_bonds);
+    SOLID_ALLOC(m->ghost, n);
+    SOLID_ALLOC(m->pk1, (int64_t)n * FSI_MAT_SIZE);
+    SOLID_ALLOC(m->defgrad, (int64_t)n * FSI_MAT_SIZE);
+    SOLID_ALLOC(m->stress, (int64_t)n * 6);
     double c_max = 0.0;
     const double modulus = material_wave_modulus(&m->mat);
     for (int i = 0; i < n; i++) {
