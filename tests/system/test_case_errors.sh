@@ -125,3 +125,19 @@ line=$(grep -n '^\[fluid.xyz\]' bad.ini | cut -d: -f1)
 expect_bad unknown_solver_section \
   "^bad.ini:$line: \[fluid.xyz\]: unknown section: 'xyz' is no fluid solver \(solver sections: \[fluid.linear_dashpot\], \[fluid.ulph\], \[fluid.wcsph\]\)"
 
+
+# What a solid model accepts (solid_model_check.c): RK4 only with a model whose force
+# commits nothing, a law of F only with a model that has F, a plastic law only with an
+# incremental model.
+s2="$FSI_SOURCE_DIR/cases/s2_plate_oscillation.ini"
+cp "$s2" bad.ini
+expect_bad rk4_with_committing_model \
+  "^--set solid.integrator=rk4: \[solid\] integrator: rk4 evaluates the internal force at trial states it throws away, and nosbpd commits" \
+  --set solid.integrator=rk4
+expect_bad law_without_deformation_gradient \
+  "^--set solid.constitutive=neo_hookean: \[solid\] constitutive: neo_hookean is a function of the deformation gradient, which pseudo_spring does not have" \
+  --set solid.solver=pseudo_spring --set solid.constitutive=neo_hookean
+expect_bad plastic_law_total_model \
+  "\[solid\] constitutive: drucker_prager needs an incremental stress update" \
+  --set solid.solver=tlsph --set solid.constitutive=drucker_prager \
+  --set solid.cohesion=1e4 --set solid.friction_angle=30
