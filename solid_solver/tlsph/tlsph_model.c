@@ -196,9 +196,9 @@ solid_model *solid_model_create(const fsi_case *c, const solid_particles *p, cha
             solid_describe_point(p, i, where, sizeof where);
             snprintf(msg, msg_size, "tlsph: the shape matrix (003 Eq. 35) of %s is singular "
                      "or ill-conditioned (%d neighbours within 2 h = %g m): its neighbours "
-                     "nearly lie on a line; a body needs at least two points across with "
+                     "nearly lie on a %s; a body needs at least two points across with "
                      "h >= dx", where, (int)(m->family.offset[i + 1] - m->family.offset[i]),
-                     2.0 * m->h);
+                     2.0 * m->h, FSI_DIM == 2 ? "line" : "plane");
             solid_model_free(m);
             return NULL;
         }
