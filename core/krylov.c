@@ -6,35 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* Summed in index order on one thread: the same value for any OpenMP setting. */
-static double dot(const double *u, const double *v, int32_t n)
-{
-    double s = 0.0;
-    for (int32_t i = 0; i < n; i++)
-        s += u[i] * v[i];
-    return s;
-}
-
-static double norm(const double *u, int32_t n)
-{
-    return sqrt(dot(u, u, n));
-}
-
-/* (u, v) vanishes when it is below its own round-off: a dot product of unit vectors
- * carries errors of order eps, so |(u, v)| <= eps |u| |v| says "orthogonal". */
-static int vanishes(double uv, double norm_u, double norm_v)
-{
-    return !isfinite(uv) || fabs(uv) <= DBL_EPSILON * norm_u * norm_v;
-}
-
-/* r = b - A x; returns ||r||. */
-static double residual(const fsi_csr *a, const double *b, const double *x, double *r)
-{
-    fsi_csr_multiply(a, x, r);
-    for (int32_t i = 0; i < a->n_rows; i++)
-        r[i] = b[i] - r[i];
-    return norm(r, a->n_rows);
-}
+#include "krylov_vectors.h"
 
 enum { R, R0, P, V, S, T, PH, SH, BEST, GUESS, N_VECTORS };
 
@@ -82,7 +54,7 @@ static const char *run(const fsi_csr *a, const fsi_precond *m, const double *b, 
     const int32_t n = a->n_rows;
     double *r = v[R], *r0 = v[R0], *p = v[P], *av = v[V], *s = v[S], *t = v[T];
     double *ph = v[PH], *sh = v[SH];
-    double norm_r = residual(a, b, x, r);
+    double norm_r = krylov_residual(a, b, x, r);
     keep_if_best(best, norm_r, x, v[BEST]);
     double norm_r0 = 0.0, rho_old = 1.0, alpha = 1.0, omega = 1.0;
     int fresh = 1; /* the recurrences (re)start from r */
@@ -94,8 +66,8 @@ static const char *run(const fsi_csr *a, const fsi_precond *m, const double *b, 
                 r0[i] = p[i] = r[i];
             norm_r0 = norm_r;
         }
-        const double rho = dot(r0, r, n);
-        if (vanishes(rho, norm_r0, norm_r))
+        const double rho = krylov_dot(r0, r, n);
+        if (krylov_vanishes(rho, norm_r0, norm_r))
             return "breakdown: rho = (r0, r) vanished";
         if (!fresh) {
             const double beta = (rho / rho_old) * (alpha / omega);
@@ -106,13 +78,13 @@ static const char *run(const fsi_csr *a, const fsi_precond *m, const double *b, 
         rho_old = rho;
         fsi_precond_apply(m, p, ph);
         fsi_csr_multiply(a, ph, av);
-        const double r0v = dot(r0, av, n);
-        if (vanishes(r0v, norm_r0, norm(av, n)))
+        const double r0v = krylov_dot(r0, av, n);
+        if (krylov_vanishes(r0v, norm_r0, krylov_norm(av, n)))
             return "breakdown: (r0, A M^-1 p) vanished";
         alpha = rho / r0v;
         for (int32_t i = 0; i < n; i++)
             s[i] = r[i] - alpha * av[i];
-        const double norm_s = norm(s, n);
+        const double norm_s = krylov_norm(s, n);
         if (!isfinite(alpha) || diverged(norm_s, goal))
             return "diverged: ||r|| above tol ||b|| / eps";
         ++*iterations;
@@ -123,8 +95,8 @@ static const char *run(const fsi_csr *a, const fsi_precond *m, const double *b, 
         } else {
             fsi_precond_apply(m, s, sh);
             fsi_csr_multiply(a, sh, t);
-            const double norm_t = norm(t, n), ts = dot(t, s, n);
-            if (vanishes(ts, norm_t, norm_s)) {
+            const double norm_t = krylov_norm(t, n), ts = krylov_dot(t, s, n);
+            if (krylov_vanishes(ts, norm_t, norm_s)) {
                 update(x, alpha, ph, 0.0, NULL, n); /* the half step still lowers r to s */
                 return "breakdown: omega = (t, s) / (t, t) vanished";
             }
@@ -132,7 +104,7 @@ static const char *run(const fsi_csr *a, const fsi_precond *m, const double *b, 
             update(x, alpha, ph, omega, sh, n);
             for (int32_t i = 0; i < n; i++)
                 r[i] = s[i] - omega * t[i];
-            norm_r = norm(r, n);
+            norm_r = krylov_norm(r, n);
             if (!isfinite(omega) || diverged(norm_r, goal))
                 return "diverged: ||r|| above tol ||b|| / eps";
             keep_if_best(best, norm_r, x, v[BEST]);
@@ -142,7 +114,7 @@ static const char *run(const fsi_csr *a, const fsi_precond *m, const double *b, 
         /* The recursion says converged: recompute the true residual, and if it is
          * not below the goal, go on from it with fresh recurrences (residual
          * replacement; van der Vorst 1992 notes the drift of the updated residual). */
-        norm_r = residual(a, b, x, r);
+        norm_r = krylov_residual(a, b, x, r);
         fresh = 1;
     }
     return NULL;
@@ -153,7 +125,7 @@ fsi_krylov_result fsi_bicgstab(const fsi_csr *a, const fsi_precond *m, const dou
 {
     fsi_krylov_result res = {0, 0.0, 0, 0, "converged"};
     const int32_t n = a->n_rows;
-    const double norm_b = norm(b, n);
+    const double norm_b = krylov_norm(b, n);
     if (norm_b == 0.0) {
         for (int32_t i = 0; i < n; i++)
             x[i] = 0.0;
@@ -181,13 +153,13 @@ fsi_krylov_result fsi_bicgstab(const fsi_csr *a, const fsi_precond *m, const dou
         memcpy(x, v[BEST], (size_t)n * sizeof *x);
         breakdown = run(a, m, b, x, goal, settings->max_iter, v, &res.iterations, &best);
     }
-    res.rel_residual = residual(a, b, x, v[R]) / norm_b;
+    res.rel_residual = krylov_residual(a, b, x, v[R]) / norm_b;
     res.converged = res.rel_residual <= settings->tol;
     /* Not converged: hand back the best of the last iterate, the best one by the
      * updated residual and the guess, by their true residuals (the updated residual
      * of a failing run can be far from the true one). */
     for (int k = BEST; k <= GUESS && !res.converged; k++) {
-        const double candidate = residual(a, b, v[k], v[R]) / norm_b;
+        const double candidate = krylov_residual(a, b, v[k], v[R]) / norm_b;
         if (candidate < res.rel_residual) {
             memcpy(x, v[k], (size_t)n * sizeof *x);
             res.rel_residual = candidate;

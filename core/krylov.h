@@ -42,7 +42,7 @@ typedef struct {
     int iterations;        /* iterations done, over all restarts */
     double rel_residual;   /* ||b - A x|| / ||b|| of the returned x (recomputed) */
     int converged;         /* 1 when rel_residual <= tol */
-    int restarts;          /* breakdown restarts (0 or 1) */
+    int restarts;          /* BiCGSTAB's breakdown restarts (0 or 1) */
     const char *reason;    /* why it stopped: "converged", "max_iter", a breakdown or
                               "diverged" (static strings) */
 } fsi_krylov_result;
@@ -50,5 +50,18 @@ typedef struct {
 /* Solves A x = b with preconditioner m (set up for this A). A square and complete. */
 fsi_krylov_result fsi_bicgstab(const fsi_csr *a, const fsi_precond *m, const double *b,
                                double *x, const fsi_krylov_settings *settings);
+
+/* fsi_gmres (core/gmres.c): restarted GMRES(m) (Saad & Schultz, SIAM J. Sci. Stat.
+ * Comput. 7 (1986) 856-869), right-preconditioned (Saad, Iterative Methods for Sparse
+ * Linear Systems, 2nd ed. 2003, Algorithm 9.5), the least-squares problem of each
+ * cycle reduced by Givens rotations as the basis grows. One product with A per
+ * iteration (BiCGSTAB: two), restart + 1 vectors of n. The same contract as
+ * fsi_bicgstab: warm start, stop on the true residual at the end of a cycle, no NaN.
+ * Within a cycle the residual cannot rise, so x is never worse than the guess; it
+ * gives up when a cycle lowers the true residual by less than 0.1 % (what a system
+ * without solution does: "stagnated") or when the Hessenberg matrix turns singular
+ * ("breakdown"); restarts counts nothing here. */
+fsi_krylov_result fsi_gmres(const fsi_csr *a, const fsi_precond *m, const double *b,
+                            double *x, const fsi_krylov_settings *settings, int restart);
 
 #endif
