@@ -115,15 +115,11 @@ static int apply_correction(const fsi_precond *pc, arnoldi *ar, int k, double *x
 fsi_krylov_result fsi_gmres(const fsi_csr *a, const fsi_precond *pc, const double *b,
                             double *x, const fsi_krylov_settings *settings, int restart)
 {
-    fsi_krylov_result res = {0, 0.0, 0, 0, "converged"};
+    fsi_krylov_result res;
     const int32_t n = a->n_rows;
-    const double norm_b = krylov_norm(b, n);
-    if (norm_b == 0.0) {
-        for (int32_t i = 0; i < n; i++)
-            x[i] = 0.0;
-        res.converged = 1;
+    const double norm_b = krylov_start(b, x, n, &res);
+    if (norm_b == 0.0)
         return res;
-    }
     arnoldi ar = {restart > 0 ? restart : 1, n, NULL, NULL, NULL, NULL, NULL, NULL, NULL};
     const size_t m = (size_t)ar.m;
     ar.basis = malloc((m + 1) * ((size_t)n + 1) * sizeof *ar.basis);

@@ -123,18 +123,15 @@ static const char *run(const fsi_csr *a, const fsi_precond *m, const double *b, 
 fsi_krylov_result fsi_bicgstab(const fsi_csr *a, const fsi_precond *m, const double *b,
                                double *x, const fsi_krylov_settings *settings)
 {
-    fsi_krylov_result res = {0, 0.0, 0, 0, "converged"};
+    fsi_krylov_result res;
     const int32_t n = a->n_rows;
-    const double norm_b = krylov_norm(b, n);
-    if (norm_b == 0.0) {
-        for (int32_t i = 0; i < n; i++)
-            x[i] = 0.0;
-        res.converged = 1;
+    const double norm_b = krylov_start(b, x, n, &res);
+    if (norm_b == 0.0)
         return res;
-    }
     double *w = malloc((size_t)N_VECTORS * ((size_t)n + 1) * sizeof *w);
     if (!w) {
         res.reason = "out of memory";
+        res.converged = 0;
         res.rel_residual = NAN;
         return res;
     }

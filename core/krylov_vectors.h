@@ -1,4 +1,4 @@
-/* The vector operations both Krylov solvers (core/krylov.c, core/gmres.c) use. The
+/* The vector operations and the start both Krylov solvers (core/krylov.c, core/gmres.c) use. The
  * dot products are summed in index order on one thread: the same value for any
  * OpenMP setting, which keeps the iterates independent of the thread count. */
 #ifndef FSI_KRYLOV_VECTORS_H
@@ -8,6 +8,7 @@
 #include <math.h>
 #include <stdint.h>
 
+#include "krylov.h"
 #include "sparse_matrix.h"
 
 static inline double krylov_dot(const double *u, const double *v, int32_t n)
@@ -38,6 +39,20 @@ static inline double krylov_residual(const fsi_csr *a, const double *b, const do
     for (int32_t i = 0; i < a->n_rows; i++)
         r[i] = b[i] - r[i];
     return krylov_norm(r, a->n_rows);
+}
+
+/* Starts a solve: *res says converged after 0 iterations, and returns ||b||. When b
+ * is 0 the solution is x = 0, set here; the caller returns *res at once. */
+static inline double krylov_start(const double *b, double *x, int32_t n,
+                                  fsi_krylov_result *res)
+{
+    const fsi_krylov_result start = {0, 0.0, 1, 0, "converged"};
+    *res = start;
+    const double norm_b = krylov_norm(b, n);
+    if (norm_b == 0.0)
+        for (int32_t i = 0; i < n; i++)
+            x[i] = 0.0;
+    return norm_b;
 }
 
 #endif

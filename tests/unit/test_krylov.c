@@ -3,7 +3,8 @@
  * (unit_umfpack.h) on matrices that look like the PPE (unit_ppe_matrices.h):
  *
  *   - CSR building: triplets (any order, duplicates) and rows give the same matrix;
- *     A x against a dense product; the diagonal; bad indices refused.
+ *     A x against a dense product; the diagonal; bad indices refused. Set-up
+ *     refuses a zero diagonal and a vanishing ILU(0) pivot, naming the row.
  *   - BiCGSTAB with Jacobi and ILU(0) on the 5-point Laplacian (symmetric) and on a
  *     non-symmetric SPH Laplacian of a jittered lattice with Dirichlet rows: true
  *     relative residual <= tol, relative error against UMFPACK <= 10 tol cond_2(A)
@@ -15,7 +16,7 @@
  *   - a singular PPE (no Dirichlet row, random right-hand side: no solution) is
  *     reported as not converged with a reason, and the x returned is finite and no
  *     worse than the start.
- *   - GMRES(30) the same against UMFPACK and on the singular PPE.
+ *   - GMRES(30) the same against UMFPACK and on the singular PPE; b = 0 gives x = 0.
  *   - A x and a Jacobi solve are the same to the bit on 1 and 2 threads.
  * It prints the iterations, residuals and times at 10 000 and 40 000 unknowns
  * (BiCGSTAB and GMRES(30) with Jacobi and ILU(0), UMFPACK: docs/isph.md, "Pressure solve"); no time is asserted. */
@@ -334,6 +335,60 @@ static void test_singular(void)
     fsi_csr_free(&a);
 }
 
+/* Set-up refuses what it cannot invert, naming the row: a zero diagonal (Jacobi), a
+ * missing one and a vanishing pivot (ILU(0): [[1, 1], [1, 1]] has u_22 = 0). */
+static void test_refusals(void)
+{
+    const int32_t zi[] = {0, 1}, zj[] = {1, 0}, si[] = {0, 0, 1, 1}, sj[] = {0, 1, 0, 1};
+    const double zv[] = {1.0, 1.0}, sv[] = {1.0, 1.0, 1.0, 1.0};
+    fsi_csr a;
+    fsi_csr_init(&a);
+    fsi_precond m;
+    fsi_precond_init(&m);
+    char err[200];
+    fsi_csr_from_triplets(&a, 2, 2, 2, zi, zj, zv);
+    for (int kind = 0; kind < 2; kind++) {
+        err[0] = '\0';
+        CHECK(fsi_precond_setup(&m, (fsi_precond_kind)kind, &a, err, sizeof err) == -1 &&
+                  strstr(err, "row 0"), "%s: [[0, 1], [1, 0]] accepted or row not named (%s)",
+              fsi_precond_name((fsi_precond_kind)kind), err);
+    }
+    fsi_csr_from_triplets(&a, 2, 2, 4, si, sj, sv);
+    err[0] = '\0';
+    CHECK(fsi_precond_setup(&m, FSI_PRECOND_ILU0, &a, err, sizeof err) == -1 &&
+              strstr(err, "pivot") && strstr(err, "row 1"),
+          "ilu0: [[1, 1], [1, 1]] accepted or its pivot not named (%s)", err);
+    fsi_precond_free(&m);
+    fsi_csr_free(&a);
+}
+
+/* b = 0: x = 0 whatever the guess, converged in 0 iterations, by both solvers. */
+static void test_zero_rhs(void)
+{
+    fsi_csr a;
+    fsi_csr_init(&a);
+    unit_laplace5(&a, 5);
+    double b[25] = {0.0}, x[25];
+    fsi_precond m;
+    fsi_precond_init(&m);
+    char err[200];
+    fsi_precond_setup(&m, FSI_PRECOND_ILU0, &a, err, sizeof err);
+    const fsi_krylov_settings settings = {TOL, 100};
+    for (int solver = 0; solver < 2; solver++) {
+        for (int i = 0; i < 25; i++)
+            x[i] = 1.0 + i;
+        const fsi_krylov_result r = solve(solver, &a, &m, b, x, &settings);
+        double largest = 0.0;
+        for (int i = 0; i < 25; i++)
+            largest = fmax(largest, fabs(x[i]));
+        CHECK(r.converged && r.iterations == 0 && largest == 0.0,
+              "%s, b = 0: converged %d, %d iterations, max |x| %g; expected 1, 0, 0",
+              solver_name(solver), r.converged, r.iterations, largest);
+    }
+    fsi_precond_free(&m);
+    fsi_csr_free(&a);
+}
+
 static void test_threads(void)
 {
     fsi_csr a;
@@ -427,6 +482,8 @@ int main(void)
     test_against_direct();
     test_warm_start();
     test_singular();
+    test_zero_rhs();
+    test_refusals();
     test_threads();
     measure(100);
 #ifdef NDEBUG
