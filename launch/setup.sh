@@ -8,6 +8,7 @@ PACKAGES=(
   liblcm-dev liblcm-bin
   libhdf5-dev hdf5-tools
   libinih-dev
+  libsuitesparse-dev
   python3-matplotlib python3-h5py python3-numpy python3-scipy
   paraview python3-paraview
   iproute2 util-linux
