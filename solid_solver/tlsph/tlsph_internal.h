@@ -41,7 +41,8 @@ struct solid_model {
     solid_bonds family;
     int64_t *reverse;           /* per bond I -> J: the slot of J -> I */
     /* Per bond I -> J: the corrected reference gradient g_IJ (FSI_DIM each: K_I^-T
-     * grad_0 W_IJ of Eqs. 35-36, or the quadratic fit's, tlsph_model.c) and the kernel value W_IJ (hourglass control). */
+     * grad_0 W_IJ of Eqs. 35-36, or the quadratic fit's, tlsph_model.c) and the
+     * kernel value W_IJ (hourglass control). */
     double *grad;
     double *kernel_w;
 
