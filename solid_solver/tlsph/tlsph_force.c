@@ -7,7 +7,8 @@
  *      Eqs. 34 and 37-40 as corrected in docs/tlsph.md; P = dW/dF for the hyperelastic
  *      ones);
  *   2. per point, the gather of the momentum equation (003 Eq. 42 times m_i):
- *        f_i = V_i sum_J V_J (P_i g_iJ - P_J g_Ji),
+ *        f_i = V_i sum_J V_J (P_i g_iJ - P_J g_Ji) = V_i (P_i s_i - sum_J V_J P_J g_Ji),
+ *      s_i = sum_J V_J g_iJ fixed at creation,
  *      plus the hourglass control (tlsph_hourglass.c) when it is on.
  *
  * Eq. 42 is the exact derivative of the discrete energy sum_i V_i W(F_i): with
@@ -56,14 +57,12 @@ static int stress_point(solid_model *m, const solid_particles *p, int i)
 {
     double *f = m->defgrad + (int64_t)i * FSI_MAT_SIZE;
     double *pk1 = m->pk1 + (int64_t)i * FSI_MAT_SIZE;
-    double *s6 = m->stress + (int64_t)i * 6;
     tlsph_deformation_gradient(m, p->x, i, f);
     if (m->ghost[i]) {
         fsi_mat_zero(pk1);
-        memset(s6, 0, 6 * sizeof *s6);
         return POINT_OK;
     }
-    return material_total_stress(&m->mat, f, pk1, s6, NULL, NULL) == 0 ? POINT_OK
+    return material_total_stress(&m->mat, f, pk1, NULL, NULL, NULL) == 0 ? POINT_OK
                                                                           : POINT_INVERTED;
 }
 
@@ -89,23 +88,19 @@ int tlsph_stress_pass(solid_model *m, const solid_particles *p, double t, char *
     return 0;
 }
 
-/* Pass 2 for point i: f_i = V_i sum_J V_J (P_i g_iJ - P_J g_Ji). */
+/* Pass 2 for point i: f_i = V_i (P_i s_i - sum_J V_J P_J g_Ji). */
 static void gather_force(const solid_model *m, const solid_particles *p, int i, double *force)
 {
     const solid_bonds *b = &m->family;
-    const double *pi = m->pk1 + (int64_t)i * FSI_MAT_SIZE;
-    double own[FSI_DIM] = {0}, other[FSI_DIM] = {0};
+    double own[FSI_DIM], other[FSI_DIM] = {0};
+    fsi_mat_vec(m->pk1 + (int64_t)i * FSI_MAT_SIZE, m->grad_sum + (int64_t)i * FSI_DIM, own);
     for (int64_t q = b->offset[i]; q < b->offset[i + 1]; q++) {
-        const int j = b->neighbour[q];
         const double vj = b->weight[q];
-        const double *gij = m->grad + q * FSI_DIM;
         const double *gji = m->grad + m->reverse[q] * FSI_DIM;
-        const double *pj = m->pk1 + (int64_t)j * FSI_MAT_SIZE;
+        const double *pj = m->pk1 + (int64_t)b->neighbour[q] * FSI_MAT_SIZE;
         for (int r = 0; r < FSI_DIM; r++)
-            for (int s = 0; s < FSI_DIM; s++) {
-                own[r] += vj * FSI_MAT(pi, r, s) * gij[s];
+            for (int s = 0; s < FSI_DIM; s++)
                 other[r] += vj * FSI_MAT(pj, r, s) * gji[s];
-            }
     }
     for (int d = 0; d < FSI_DIM; d++)
         force[(int64_t)i * FSI_DIM + d] = p->volume[i] * (own[d] - other[d]);

@@ -49,8 +49,10 @@ struct solid_model {
     /* Per point. */
     uint8_t *ghost;             /* 1 for mirrored clamp points (images, not material) */
     double *pk1;                /* first Piola-Kirchhoff stress of the last evaluation */
-    double *defgrad;            /* F of the last evaluation (hourglass control) */
-    double *stress;             /* Cauchy stress of the last evaluation, 6 each (output) */
+    double *defgrad;            /* F of the last evaluation (hourglass control, output) */
+    /* sum_J V_J g_IJ (FSI_DIM each, fixed): the gather's own term is P_I times it, so
+     * the pair loop carries only the neighbours' stresses (zero inside the lattice). */
+    double *grad_sum;
 };
 
 /* P_i and F_i of every point at positions x (pass 1); -1 with msg naming the first

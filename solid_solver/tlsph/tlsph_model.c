@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "cubic_spline.h"
+#include "particle_health.h"
 #include "solid_point_text.h"
 #include "solid_model_setup.h"
 #include "tlsph_internal.h"
@@ -27,7 +28,7 @@ void solid_model_free(solid_model *m)
     free(m->ghost);
     free(m->pk1);
     free(m->defgrad);
-    free(m->stress);
+    free(m->grad_sum);
     free(m);
 }
 
@@ -137,6 +138,8 @@ static int shape_point(solid_model *m, const reference_kernel *k, int i)
                     g[r] += FSI_MAT(kinv, r, s) * omega * xi[s];
         }
         memcpy(m->grad + q * FSI_DIM, g, sizeof g);
+        for (int d = 0; d < FSI_DIM; d++)
+            m->grad_sum[(int64_t)i * FSI_DIM + d] += b->weight[q] * g[d];
     }
     return 0;
 }
@@ -184,7 +187,7 @@ solid_model *solid_model_create(const fsi_case *c, const solid_particles *p, cha
     SOLID_ALLOC(m->ghost, n);
     SOLID_ALLOC(m->pk1, (int64_t)n * FSI_MAT_SIZE);
     SOLID_ALLOC(m->defgrad, (int64_t)n * FSI_MAT_SIZE);
-    SOLID_ALLOC(m->stress, (int64_t)n * 6);
+    SOLID_ALLOC(m->grad_sum, (int64_t)n * FSI_DIM);
     double c_max = 0.0;
     const double modulus = material_wave_modulus(&m->mat);
     for (int i = 0; i < n; i++) {
@@ -220,15 +223,10 @@ out_of_memory:
  * above the lattice bound dx / c that solid_step_check.c estimates from. */
 double solid_model_stable_dt(const solid_model *m, const solid_particles *p)
 {
-    double v2 = 0.0;
-    for (int i = 0; i < p->n; i++) {
-        double s = 0.0;
-        for (int d = 0; d < FSI_DIM; d++)
-            s += p->v[i * FSI_DIM + d] * p->v[i * FSI_DIM + d];
-        v2 = fmax(v2, s);
-    }
+    double speed;
+    fsi_fastest(p->v, p->n, &speed);
     const double c = m->sound_speed;
-    return fmin(m->courant * m->h / (c + sqrt(v2)), m->dx / c);
+    return fmin(m->courant * m->h / (c + speed), m->dx / c);
 }
 
 /* The internal force is a function of the positions alone (total Lagrangian, a
@@ -251,6 +249,8 @@ int solid_model_surface(const solid_model *m, const solid_particles *p, uint8_t 
     return count;
 }
 
+/* The Cauchy stress and det F of the last evaluation (the current state: every
+ * integrator's last evaluation is at the step's end), from its F. */
 int solid_model_write_fields(const solid_model *m, fsi_h5_writer *out)
 {
     const int n = m->n;
@@ -259,9 +259,12 @@ int solid_model_write_fields(const solid_model *m, fsi_h5_writer *out)
     int rc = -1;
     if (sigma && jac) {
         for (int i = 0; i < n; i++) {
-            const double *s6 = m->stress + (int64_t)i * 6;
+            const double *f = m->defgrad + (int64_t)i * FSI_MAT_SIZE;
+            double pk1[FSI_MAT_SIZE], s6[6] = {0};
+            if (!m->ghost[i])
+                material_total_stress(&m->mat, f, pk1, s6, NULL, NULL);
             fsi_sym6_to_mat(s6, sigma + (int64_t)i * FSI_MAT_SIZE);
-            jac[i] = fsi_mat_det(m->defgrad + (int64_t)i * FSI_MAT_SIZE);
+            jac[i] = fsi_mat_det(f);
         }
         rc = fsi_h5_write_field_real(out, "stress", sigma, FSI_MAT_SIZE) != 0 ||
                      fsi_h5_write_field_real(out, "jacobian", jac, 1) != 0
