@@ -29,10 +29,11 @@ void solid_rk4_free(solid_rk4_state *s)
 }
 
 /* Adds weight * (k_x, k_v) of the stage the particles hold (k_x = v, k_v = a) to the
- * sums, then moves the particles to the next stage's state (x_n + c k_x, v_n + c k_v),
- * clamped points held at x0 and rest, mirrored ones following their partners. */
+ * sums, then moves the particles to x_n + c k (the next stage's state) or, for the
+ * last stage (combine), to x_n + c sum (the step's result); clamped points held at x0
+ * and rest, mirrored ones following their partners. */
 static void accumulate_and_move(solid_particles *p, solid_rk4_state *s, double weight,
-                                double c)
+                                double c, int combine)
 {
     for (int i = 0; i < p->n; i++) {
         const int clamped = (p->flags[i] & SOLID_CLAMPED) != 0;
@@ -46,8 +47,8 @@ static void accumulate_and_move(solid_particles *p, solid_rk4_state *s, double w
                 p->v[k] = 0.0;
                 continue;
             }
-            p->x[k] = s->x_n[k] + c * kx;
-            p->v[k] = s->v_n[k] + c * kv;
+            p->x[k] = s->x_n[k] + c * (combine ? s->dx[k] : kx);
+            p->v[k] = s->v_n[k] + c * (combine ? s->dv[k] : kv);
         }
     }
     solid_follow_partners(p);
@@ -69,28 +70,12 @@ int solid_rk4_step(solid_particles *p, double t, double h, const solid_integrato
     fault->particle = -1;
     fault->what[0] = '\0';
     for (int stage = 0; stage < 3; stage++) {
-        accumulate_and_move(p, s, weight[stage], offset[stage] * h);
+        accumulate_and_move(p, s, weight[stage], offset[stage] * h, 0);
         if (forces(ctx, p, t + offset[stage] * h) != 0)
             return -2;
         solid_acceleration(p, f, in);
     }
-    /* The fourth stage's k, then the combination. */
-    for (int i = 0; i < p->n; i++) {
-        const int clamped = (p->flags[i] & SOLID_CLAMPED) != 0;
-        for (int d = 0; d < FSI_DIM; d++) {
-            const int k = i * FSI_DIM + d;
-            s->dx[k] += weight[3] * p->v[k];
-            s->dv[k] += weight[3] * p->a[k];
-            if (clamped) {
-                p->x[k] = p->x0[k];
-                p->v[k] = 0.0;
-                continue;
-            }
-            p->x[k] = s->x_n[k] + h / 6.0 * s->dx[k];
-            p->v[k] = s->v_n[k] + h / 6.0 * s->dv[k];
-        }
-    }
-    solid_follow_partners(p);
+    accumulate_and_move(p, s, weight[3], h / 6.0, 1);
     if (forces(ctx, p, t + h) != 0)
         return -2;
     solid_acceleration(p, f, in);
