@@ -2092,6 +2092,13 @@ long fsi_case_get_int(const fsi_case *c, const char *section_name, const char *k
     return v && parse_int(v, &n) == NUM_OK ? n : fallback;
 }
 
+int fsi_case_choice_is(const fsi_case *c, const char *section_name, const char *key,
+                       const char *word)
+{
+    const char *v = fsi_case_get(c, section_name, key);
+    return v && strcmp(v, word) == 0;
+}
+
 int fsi_case_get_bool(const fsi_case *c, const char *section_name, const char *key,
                       int fallback)
 {

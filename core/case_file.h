@@ -169,6 +169,8 @@ const char *fsi_case_get(const fsi_case *c, const char *section, const char *key
 double fsi_case_get_real(const fsi_case *c, const char *section, const char *key, double fallback);
 long fsi_case_get_int(const fsi_case *c, const char *section, const char *key, long fallback);
 int fsi_case_get_bool(const fsi_case *c, const char *section, const char *key, int fallback);
+/* 1 when the key's value (a choice) is word, 0 otherwise or when absent. */
+int fsi_case_choice_is(const fsi_case *c, const char *section, const char *key, const char *word);
 /* Fills out[0..FSI_DIM-1]; returns 0, or -1 when absent. */
 int fsi_case_get_vector(const fsi_case *c, const char *section, const char *key, double *out);
 

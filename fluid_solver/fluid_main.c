@@ -376,7 +376,8 @@ static int setup(fluid_run *s, fsi_participant *part)
     s->energy_floor = ENERGY_FLOOR * mass * pr->sound_speed * pr->sound_speed;
     s->kinetic0 = kinetic_energy(p);
     fluid_momentum(p, s->momentum0);
-    s->compression0 = compression_energy(p, pr);
+    /* an incompressible fluid stores no energy in its pressure */
+    s->compression0 = fluid_scheme_compressible(s->scheme) ? compression_energy(p, pr) : 0.0;
     s->potential0 = potential_energy(p, pr->gravity);
 
     s->out = fsi_h5_create(fsi_output_dir(part), fsi_participant_name(part),
@@ -566,6 +567,8 @@ static int advance(fluid_run *s, double t0, double dt, int window)
  * MACH_WARN (once), a stop past MACH_STOP. */
 static int check_mach(fluid_run *s, double t, int window)
 {
+    if (!fluid_scheme_compressible(s->scheme))
+        return 0;   /* no sound speed: a projection scheme's step follows the flow */
     const fluid_particles *p = &s->p;
     double vmax = 0.0;
     int fastest = -1;

@@ -47,6 +47,12 @@ fluid_scheme *fluid_scheme_create(const fsi_case *c, const char *role,
                                   const fluid_properties *props, const fluid_particles *p,
                                   char *msg, size_t msg_size);
 
+/* 1 for a weakly compressible scheme (pressure from density by an equation of state, a
+ * sound speed that bounds the step and the Mach number), 0 for a projection scheme
+ * (pressure from a Poisson equation, density rho0: fluid_scheme_pressure is then 0 and
+ * fluid_scheme_density rho0; no sound speed enters its step). */
+int fluid_scheme_compressible(const fluid_scheme *s);
+
 /* Pressure (and density) from the equation of state for every fluid particle. */
 double fluid_scheme_pressure(const fluid_scheme *s, double density);
 /* Density of a given pressure (the inverse, for initial conditions and walls). */

@@ -4,6 +4,7 @@
 
 #include "example_keys.h"
 #include "fluid_keys.h"
+#include "isph_keys.h"
 #include "material.h"
 #include "nosbpd_keys.h"
 #include "pseudo_spring_keys.h"
@@ -40,6 +41,7 @@ static const fsi_key_table *const solid_model_tables[] = {&fsi_solid_common_keys
 
 static const fsi_key_table *const ulph_tables[] = {&fsi_fluid_common_keys};
 static const fsi_key_table *const wcsph_tables[] = {&fsi_fluid_common_keys};
+static const fsi_key_table *const isph_tables[] = {&fsi_fluid_common_keys};
 
 #define N_TABLES(a) ((int)(sizeof(a) / sizeof((a)[0])))
 
@@ -124,6 +126,15 @@ static const fsi_solver_spec solvers[] = {
          "Verlet stepping (seed 004 section 2, fluid_solver/wcsph, docs/wcsph.md).",
      .key_tables = wcsph_tables, .n_key_tables = N_TABLES(wcsph_tables),
      .own_keys = &fsi_wcsph_keys, .support = wcsph_support, .objects = fsi_fluid_object_kinds,
+     .n_objects = FSI_FLUID_N_OBJECT_KINDS, .check = fluid_geometry_check},
+    {.name = "isph", .role = "fluid", .executable = "fsi-fluid-isph",
+     .description =
+         "Incompressible SPH: a projection with a pressure Poisson equation solved every step "
+         "(BiCGSTAB with ILU(0)), free-surface detection, particle shifting, dummy walls and "
+         "the solid as unknowns of the Poisson equation (seed 003 section 2.1, "
+         "fluid_solver/isph, docs/isph.md).",
+     .key_tables = isph_tables, .n_key_tables = N_TABLES(isph_tables),
+     .own_keys = &fsi_isph_keys, .support = isph_support, .objects = fsi_fluid_object_kinds,
      .n_objects = FSI_FLUID_N_OBJECT_KINDS, .check = fluid_geometry_check},
 };
 

@@ -170,6 +170,12 @@ void fluid_scheme_free(fluid_scheme *s)
     free(s);
 }
 
+int fluid_scheme_compressible(const fluid_scheme *s)
+{
+    (void)s;
+    return 1;
+}
+
 double fluid_scheme_pressure(const fluid_scheme *s, double density)
 {
     return tait_eos_pressure(&s->eos, density);

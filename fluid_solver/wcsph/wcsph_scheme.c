@@ -88,12 +88,6 @@ static int reserve(fluid_scheme *s, int n)
     return 0;
 }
 
-static int choice_is(const fsi_case *c, const char *role, const char *key, const char *word)
-{
-    const char *v = fsi_case_get(c, role, key);
-    return v && strcmp(v, word) == 0;
-}
-
 fluid_scheme *fluid_scheme_create(const fsi_case *c, const char *role,
                                   const fluid_properties *props, const fluid_particles *p,
                                   char *msg, size_t msg_size)
@@ -121,9 +115,9 @@ fluid_scheme *fluid_scheme_create(const fsi_case *c, const char *role,
     prm->beta1 = fsi_case_get_real(c, own, "artificial_viscosity", WCSPH_ARTIFICIAL_VISCOSITY);
     prm->beta2 = fsi_case_get_real(c, own, "artificial_viscosity_quadratic", 0.0);
     prm->delta = fsi_case_get_real(c, own, "density_diffusion", WCSPH_DENSITY_DIFFUSION);
-    prm->antuono = choice_is(c, own, "density_diffusion_form", "antuono");
-    prm->laplacian = choice_is(c, own, "viscous_operator", "laplacian");
-    prm->solid_dummy = !choice_is(c, own, "solid_coupling", "contact");
+    prm->antuono = fsi_case_choice_is(c, own, "density_diffusion_form", "antuono");
+    prm->laplacian = fsi_case_choice_is(c, own, "viscous_operator", "laplacian");
+    prm->solid_dummy = !fsi_case_choice_is(c, own, "solid_coupling", "contact");
     prm->contact = fsi_case_get_real(c, own, "solid_contact", WCSPH_SOLID_CONTACT);
     prm->spacing = p->spacing;
     memcpy(prm->gravity, props->gravity, sizeof prm->gravity);
@@ -133,7 +127,7 @@ fluid_scheme *fluid_scheme_create(const fsi_case *c, const char *role,
     s->step.sound_speed = props->sound_speed;
     s->step.density = props->density;
     s->step.viscosity = props->viscosity;
-    s->verlet = choice_is(c, own, "integrator", "verlet");
+    s->verlet = fsi_case_choice_is(c, own, "integrator", "verlet");
     fluid_wc_verlet_init(&s->verlet_integrator, FLUID_VERLET_EULER_INTERVAL);
     s->skin = fsi_case_get_real(c, own, "neighbour_skin", FLUID_VERLET_SKIN) * s->kernel.support;
     fluid_verlet_init(&s->list);
@@ -158,6 +152,12 @@ void fluid_scheme_free(fluid_scheme *s)
     fluid_wc_verlet_free(&s->verlet_integrator);
     free(s->velocity_for_viscosity);
     free(s);
+}
+
+int fluid_scheme_compressible(const fluid_scheme *s)
+{
+    (void)s;
+    return 1;
 }
 
 double fluid_scheme_pressure(const fluid_scheme *s, double density)

@@ -108,7 +108,7 @@ expect_bad own_key_in_fluid \
   "^bad.ini:$line: \[fluid\] artificial_viscosity: a key of solvers ulph, wcsph; write it in \[fluid.ulph\] or \[fluid.wcsph\]"
 cp "$c1" bad.ini
 expect_bad own_key_set \
-  "^--set fluid.smoothing_factor=1.3: \[fluid\] smoothing_factor: a key of solvers ulph, wcsph; write it in \[fluid.ulph\] or \[fluid.wcsph\]" \
+  "^--set fluid.smoothing_factor=1.3: \[fluid\] smoothing_factor: a key of solvers ulph, wcsph, isph; write it in \[fluid.ulph\] or \[fluid.wcsph\] or \[fluid.isph\]" \
   --set fluid.smoothing_factor=1.3
 expect_bad own_key_bound \
   "^--set fluid.ulph.artificial_viscosity=0.9: \[fluid.ulph\] artificial_viscosity: 0.9 must be <= 0.5" \
@@ -123,7 +123,7 @@ expect_bad unchosen_section_typo \
 printf '\n[fluid.xyz]\n' | cat good.ini - >bad.ini
 line=$(grep -n '^\[fluid.xyz\]' bad.ini | cut -d: -f1)
 expect_bad unknown_solver_section \
-  "^bad.ini:$line: \[fluid.xyz\]: unknown section: 'xyz' is no fluid solver \(solver sections: \[fluid.linear_dashpot\], \[fluid.ulph\], \[fluid.wcsph\]\)"
+  "^bad.ini:$line: \[fluid.xyz\]: unknown section: 'xyz' is no fluid solver \(solver sections: \[fluid.linear_dashpot\], \[fluid.ulph\], \[fluid.wcsph\], \[fluid.isph\]\)"
 
 
 # What a solid model accepts (solid_model_check.c): RK4 only with a model whose force
