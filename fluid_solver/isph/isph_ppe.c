@@ -79,6 +79,17 @@ static int reserve(isph_ppe *s, const isph_pairs *q, int n)
     return 0;
 }
 
+/* Component d of the acceleration of wall or solid particle j without the fluid's last
+ * load when its inertia is in the equation (boundary_row), as received otherwise. */
+static double own_acceleration(const isph_ppe *s, const fluid_particles *p, int j, int d)
+{
+    const double a = p->boundary_acceleration[j * FSI_DIM + d];
+    const double mass = s->inertia.mass ? s->inertia.mass[j] : 0.0;
+    if (!(mass > 0.0) || !(p->flags[j] & FLUID_PARTICLE_MOVING_BOUNDARY))
+        return a;
+    return a - s->inertia.last_load[j * FSI_DIM + d] / mass;
+}
+
 static void zero_row(isph_ppe *s, const isph_pairs *q, int i)
 {
     s->diag[i] = 1.0;
@@ -129,8 +140,7 @@ static void fluid_row(isph_ppe *s, const isph_pairs *q, const fluid_particles *p
         for (int d = 0; d < FSI_DIM; d++)
             uj[d] = (p->flags[j] & FLUID_PARTICLE_FLUID)
                         ? u_star[j * FSI_DIM + d]
-                        : p->v[j * FSI_DIM + d] +
-                              dt * (gravity[d] - p->boundary_acceleration[j * FSI_DIM + d]);
+                        : p->v[j * FSI_DIM + d] + dt * (gravity[d] - own_acceleration(s, p, j, d));
         for (int d = 0; d < FSI_DIM; d++)
             div += p->volume[j] * (uj[d] - ui[d]) * bg[d];
     }
@@ -173,16 +183,24 @@ static void fluid_row(isph_ppe *s, const isph_pairs *q, const fluid_particles *p
     }
 }
 
-/* Row i of a wall or solid particle: Adami et al. 2012, Eq. 27, between unknowns. */
+/* Row i of a wall or solid particle: Adami et al. 2012, Eq. 27, between unknowns,
+ * scaled to a unit diagonal. A solid particle of known mass m_S (isph_ppe_inertia) has
+ * its acceleration in the condition taken implicitly, a_S = a_int + F_S(p) / m_S, F_S
+ * the pressure pair terms' reaction on it (isph_pressure_loads), a_int its received
+ * acceleration without the load of the last step: the fluid then moves the interface
+ * with the structure's inertia inside the solve (003 §2.3's structure particles as
+ * unknowns), the remedy of the added-mass instability of explicit coupling. */
 static void boundary_row(isph_ppe *s, const isph_pairs *q, const fluid_particles *p,
                          const isph_fields *f, double rho0, const double *gravity, int i)
 {
     s->diag[i] = 1.0;
     s->rhs[i] = 0.0;
     const double sw = f->sum_w[i];
-    double g_rel[FSI_DIM];
+    const double mass = s->inertia.mass ? s->inertia.mass[i] : 0.0;
+    const int implicit = mass > 0.0 && (p->flags[i] & FLUID_PARTICLE_MOVING_BOUNDARY);
+    double g_rel[FSI_DIM], lever[FSI_DIM] = {0};
     for (int d = 0; d < FSI_DIM; d++)
-        g_rel[d] = gravity[d] - p->boundary_acceleration[i * FSI_DIM + d];
+        g_rel[d] = gravity[d] - own_acceleration(s, p, i, d);
     for (int64_t e = q->start[i]; e < q->start[i + 1]; e++) {
         const int j = q->j[e];
         if (!(sw > 0.0) || !(p->flags[j] & FLUID_PARTICLE_FLUID)) {
@@ -191,8 +209,28 @@ static void boundary_row(isph_ppe *s, const isph_pairs *q, const fluid_particles
         }
         const double w = q->w[e] / sw;
         s->coef[e] = -w;
-        s->rhs[i] -= rho0 * w * fsi_vec_dot(g_rel, &q->xij[e * FSI_DIM]); /* x_S - x_f */
+        for (int d = 0; d < FSI_DIM; d++)
+            lever[d] -= w * q->xij[e * FSI_DIM + d];                /* x_S - x_f */
     }
+    s->rhs[i] = rho0 * fsi_vec_dot(g_rel, lever);
+    if (!implicit || !(sw > 0.0))
+        return;
+    /* + (rho0 / m_S) lever . F_S(p), F_S = sum_a V_a V_S F (p_a + p_S) x_Sa */
+    double diag = 1.0;
+    for (int64_t e = q->start[i]; e < q->start[i + 1]; e++) {
+        const int j = q->j[e];
+        if (!(p->flags[j] & FLUID_PARTICLE_FLUID))
+            continue;
+        const double c = rho0 / mass * p->volume[j] * p->volume[i] * q->f[e] *
+                         fsi_vec_dot(lever, &q->xij[e * FSI_DIM]);
+        s->coef[e] += c;
+        diag += c;
+    }
+    if (!(diag > 0.0))
+        return;     /* cannot happen for a wetted face; keep the explicit row's sense */
+    for (int64_t e = q->start[i]; e < q->start[i + 1]; e++)
+        s->coef[e] /= diag;
+    s->rhs[i] /= diag;
 }
 
 /* Rows of every particle (walls held at p = 0 get p = 0); the number of rows without a
@@ -219,10 +257,10 @@ static int assemble(isph_ppe *s, const isph_pairs *q, const fluid_particles *p,
 }
 
 /* The walls' active set: a wall or solid particle whose pressure came out negative is
- * held at 0 ("a wall pushes, never pulls", as walls/ghost_walls.h bounds it: the wall
- * above a free surface would otherwise continue the hydrostatic field into suction and
- * draw the water up along it); a held one whose condition now asks for a positive
- * pressure is released. Returns how many changed. */
+ * held at 0 and the equation solved again ("a wall pushes, never pulls", as
+ * walls/ghost_walls.h bounds it: the wall above a free surface would otherwise continue
+ * the hydrostatic field into suction and draw the water up along it); a held one whose
+ * condition now asks for a positive pressure is released. Returns how many changed. */
 static int update_held(isph_ppe *s, const isph_pairs *q, const fluid_particles *p,
                        const isph_fields *f, double rho0, const double *gravity)
 {
@@ -266,6 +304,26 @@ static int reserve_held(isph_ppe *s, int n)
     return 0;
 }
 
+/* The matrix of the rows in s, appended in order. 0, or -1 when memory runs out. */
+static int build_matrix(isph_ppe *s, const isph_pairs *q, int n)
+{
+    if (fsi_csr_begin(&s->a, n, n, q->start[n] + n) != 0)
+        return -1;
+    for (int i = 0; i < n; i++) {
+        int32_t count = 0;
+        s->cols[count] = i;
+        s->vals[count++] = s->diag[i];
+        for (int64_t e = q->start[i]; e < q->start[i + 1]; e++)
+            if (s->coef[e] != 0.0) {
+                s->cols[count] = q->j[e];
+                s->vals[count++] = s->coef[e];
+            }
+        if (fsi_csr_append_row(&s->a, count, s->cols, s->vals) != 0)
+            return -1;
+    }
+    return 0;
+}
+
 int isph_ppe_solve(isph_ppe *s, const isph_pairs *q, fluid_particles *p, const isph_fields *f,
                    const double *u_star, double dt, double rho0, const double *gravity,
                    fsi_krylov_result *res, char *msg, size_t msg_size)
@@ -290,19 +348,10 @@ int isph_ppe_solve(isph_ppe *s, const isph_pairs *q, fluid_particles *p, const i
                 s->coef[e] = 0.0;
             s->pinned += pass == 0;
         }
-        if (fsi_csr_begin(&s->a, n, n, q->start[n] + n) != 0)
-            goto out_of_memory;
-        for (int i = 0; i < n; i++) {
-            int32_t count = 0;
-            s->cols[count] = i;
-            s->vals[count++] = s->diag[i];
-            for (int64_t e = q->start[i]; e < q->start[i + 1]; e++)
-                if (s->coef[e] != 0.0) {
-                    s->cols[count] = q->j[e];
-                    s->vals[count++] = s->coef[e];
-                }
-            if (fsi_csr_append_row(&s->a, count, s->cols, s->vals) != 0)
-                goto out_of_memory;
+        if (build_matrix(s, q, n) != 0) {
+            snprintf(msg, msg_size, "out of memory for the pressure Poisson equation of %d "
+                     "particles", n);
+            return -1;
         }
         char err[256];
         if (fsi_precond_setup(&s->m, s->preconditioner, &s->a, err, sizeof err) != 0) {
@@ -334,15 +383,11 @@ int isph_ppe_solve(isph_ppe *s, const isph_pairs *q, fluid_particles *p, const i
         s->worst_iterations = res->iterations;
     if (res->rel_residual > s->worst_residual)
         s->worst_residual = res->rel_residual;
-    /* a held wall whose last pass left it slightly negative */
+    /* a wall the last pass left negative (the passes ran out) */
     for (int i = 0; i < n; i++)
         if (!(p->flags[i] & FLUID_PARTICLE_FLUID) && p->pressure[i] < 0.0)
             p->pressure[i] = 0.0;
     return 0;
-out_of_memory:
-    snprintf(msg, msg_size, "out of memory for the pressure Poisson equation of %d particles",
-             n);
-    return -1;
 }
 
 void isph_ppe_reordered(isph_ppe *s, const int *sorted, int n, void *scratch)

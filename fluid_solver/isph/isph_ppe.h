@@ -44,8 +44,17 @@
 #include "isph_pairs.h"
 #include "krylov.h"
 
+/* The solid's inertia in the Poisson equation (isph_ppe.c, boundary_row): per particle
+ * its mass (0: none, the received acceleration is taken as it is) and the pressure
+ * load of the last step on it. Arrays of the scheme's, NULL for none. */
+typedef struct {
+    const double *mass;
+    const double *last_load;
+} isph_inertia;
+
 typedef struct {
     fsi_krylov_settings settings;
+    isph_inertia inertia;
     fsi_precond_kind preconditioner;
     int gmres;                  /* 1: GMRES(30), 0: BiCGSTAB */
     double surface_offset;      /* where the free surface is, outside a surface particle [m] */

@@ -61,6 +61,8 @@ struct fluid_scheme {
     double *pressure_acc;       /* a_p of the last rates */
     double *viscous_loads;      /* the reaction of a_v's pair terms on the solid */
     double *u_star, *x_start, *v_start, *shift, *grad;
+    double *solid_mass, *last_load; /* the solid's inertia in the Poisson equation */
+    double solid_density;       /* [kg/m^3]; 0: explicit coupling */
     double *x_fresh, *p_fresh;  /* positions and pressures of the last solve or step */
     int n_fresh;                /* their count; 0: none */
     int projecting;             /* 1 inside step 2 */
@@ -95,10 +97,15 @@ static int reserve(fluid_scheme *s, int n)
     const size_t cap = fsi_grown_capacity((size_t)n), vec = cap * FSI_DIM * sizeof(double);
     int failed = 0;
     double **arrays[] = {&s->viscous, &s->pressure_acc, &s->viscous_loads, &s->u_star,
-                         &s->x_start, &s->v_start, &s->shift, &s->grad, &s->x_fresh};
+                         &s->x_start, &s->v_start, &s->shift, &s->grad, &s->x_fresh,
+                         &s->last_load};
     for (size_t k = 0; k < sizeof arrays / sizeof arrays[0]; k++)
         *arrays[k] = fsi_grow(*arrays[k], vec, &failed);
     s->p_fresh = fsi_grow(s->p_fresh, cap * sizeof(double), &failed);
+    s->solid_mass = fsi_grow(s->solid_mass, cap * sizeof(double), &failed);
+    if (!failed && s->last_load)
+        memset(s->last_load + (size_t)s->capacity * FSI_DIM, 0,
+               (cap - (size_t)s->capacity) * FSI_DIM * sizeof(double));
     if (failed)
         return -1;
     s->capacity = (int)cap;
@@ -125,6 +132,7 @@ fluid_scheme *fluid_scheme_create(const fsi_case *c, const char *role,
     s->w_lattice = isph_lattice_kernel_sum(&s->kernel, p->spacing);
     s->spacing = p->spacing;
     s->rho0 = props->density;
+    s->solid_density = fsi_case_get_real(c, own, "solid_density", 0.0);
     s->nu0 = props->viscosity / props->density;
     memcpy(s->gravity, props->gravity, sizeof s->gravity);
     s->free_slip = props->free_slip;
@@ -185,7 +193,8 @@ void fluid_scheme_free(fluid_scheme *s)
     isph_fields_free(&s->fields);
     isph_ppe_free(&s->ppe);
     double *arrays[] = {s->viscous, s->pressure_acc, s->viscous_loads, s->u_star, s->x_start,
-                        s->v_start, s->shift, s->grad, s->x_fresh, s->p_fresh};
+                        s->v_start, s->shift, s->grad, s->x_fresh, s->p_fresh,
+                        s->solid_mass, s->last_load};
     for (size_t k = 0; k < sizeof arrays / sizeof arrays[0]; k++)
         free(arrays[k]);
     free(s);
@@ -260,6 +269,14 @@ static void remember_state(fluid_scheme *s, const fluid_particles *p)
 static int solve(fluid_scheme *s, fluid_particles *p, const double *u_star, double dt, char *msg,
                  size_t msg_size)
 {
+    s->ppe.inertia = (isph_inertia){NULL, NULL};
+    if (s->solid_density > 0.0) {
+        for (int i = 0; i < p->n; i++)
+            s->solid_mass[i] = (p->flags[i] & FLUID_PARTICLE_MOVING_BOUNDARY)
+                                   ? s->solid_density * p->volume[i]
+                                   : 0.0;
+        s->ppe.inertia = (isph_inertia){s->solid_mass, s->last_load};
+    }
     phase(s, PHASE_PPE, 1);
     const int rc = isph_ppe_solve(&s->ppe, &s->pairs, p, &s->fields, u_star, dt, s->rho0,
                                   s->gravity, &s->last, msg, msg_size);
@@ -443,6 +460,7 @@ int fluid_scheme_step(fluid_scheme *s, fluid_particles *p, double t, double dt,
                 s->v_start[k] = end;
             }
     const int loads = hooks->loads(hooks->owner, dt);
+    isph_pressure_loads(&s->pairs, p, s->ppe.held, s->last_load);
     for (int i = 0; i < n; i++)
         if (p->flags[i] & FLUID_PARTICLE_MOVING_BOUNDARY)
             for (int d = 0; d < FSI_DIM; d++)
