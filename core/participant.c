@@ -30,7 +30,7 @@ typedef struct {
     int window;      /* -1: empty */
     int n, capacity;
     int32_t *id;
-    double *position, *velocity, *acceleration, *volume, *pressure, *force;
+    double *position, *velocity, *acceleration, *volume, *density, *pressure, *force;
     double impedance;
 } interface_slot;
 
@@ -104,9 +104,10 @@ static void grow_slot(interface_slot *s, int n)
     s->acceleration = realloc(s->acceleration, v);
     s->force = realloc(s->force, v);
     s->volume = realloc(s->volume, sc);
+    s->density = realloc(s->density, sc);
     s->pressure = realloc(s->pressure, sc);
     if (!s->id || !s->position || !s->velocity || !s->acceleration || !s->force ||
-        !s->volume || !s->pressure) {
+        !s->volume || !s->density || !s->pressure) {
         fsi_error("out of memory for %d interface particles", n);
         exit(FSI_EXIT_RUN_FAILURE);
     }
@@ -121,6 +122,7 @@ static void free_slot(interface_slot *s)
     free(s->acceleration);
     free(s->force);
     free(s->volume);
+    free(s->density);
     free(s->pressure);
 }
 
@@ -148,6 +150,7 @@ static void take_solid_state(fsi_participant *p, const fsi_solid_state_t *m)
     memcpy(s->velocity, m->velocity, (size_t)m->n_components * sizeof(double));
     memcpy(s->acceleration, m->acceleration, (size_t)m->n_components * sizeof(double));
     memcpy(s->volume, m->volume, (size_t)m->n * sizeof(double));
+    memcpy(s->density, m->density, (size_t)m->n * sizeof(double));
 }
 
 static void take_fluid_load(fsi_participant *p, const fsi_fluid_load_t *m)
@@ -440,11 +443,34 @@ int fsi_coupled(const fsi_participant *p)
     return peer_with_role(p, other_role(p)) != NULL;
 }
 
+/* The first array a solid state of n > 0 particles lacks, or NULL. */
+static const char *missing_solid_array(const fsi_interface *d)
+{
+    if (d->n <= 0)
+        return NULL;
+    return !d->id             ? "id"
+           : !d->position     ? "position"
+           : !d->velocity     ? "velocity"
+           : !d->acceleration ? "acceleration"
+           : !d->volume       ? "volume"
+           : !d->density      ? "density"
+                              : NULL;
+}
+
 int fsi_write_interface(fsi_participant *p, const fsi_interface *d)
 {
     if (!fsi_coupled(p))
         return 0;
     if (strcmp(p->role, "solid") == 0) {
+        /* Refused here rather than left to the encoder, which would read through the
+         * NULL: a solid written before protocol version 3 sets no density, and a
+         * stand-in value would reach the fluid as the solid's mass. */
+        const char *missing = missing_solid_array(d);
+        if (missing) {
+            fsi_error("fsi_write_interface: the solid state of %d particles has no %s array "
+                      "(docs/participant_api.md, Interface data)", d->n, missing);
+            return -1;
+        }
         fsi_solid_state_t m = {0};
         m.header.window = p->window;
         m.dim = FSI_DIM;
@@ -455,6 +481,7 @@ int fsi_write_interface(fsi_participant *p, const fsi_interface *d)
         m.velocity = d->velocity;
         m.acceleration = d->acceleration;
         m.volume = d->volume;
+        m.density = d->density;
         return fsi_bus_publish(p->bus, FSI_MSG_SOLID_STATE, &m);
     }
     fsi_fluid_load_t m = {0};
@@ -494,6 +521,7 @@ int fsi_read_interface(fsi_participant *p, fsi_interface *d)
     d->velocity = s->velocity;
     d->acceleration = s->acceleration;
     d->volume = s->volume;
+    d->density = s->density;
     d->pressure = s->pressure;
     d->force = s->force;
     d->impedance = s->impedance;

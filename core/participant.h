@@ -35,17 +35,21 @@
 typedef struct fsi_participant fsi_participant;
 
 /* Interface particle data. The solid writes id, position, velocity, acceleration
- * (n * FSI_DIM, particle-major) and volume; the fluid writes id, pressure and force
- * (n * FSI_DIM) for the particles it received, and its acoustic impedance rho0 c0
- * (one number: what the solid needs to answer the fluid within a window,
- * docs/coupling.md). */
+ * (n * FSI_DIM, particle-major), volume and density (n each; all of them required,
+ * fsi_write_interface refuses a state of n > 0 that lacks one); the fluid writes id,
+ * pressure and force (n * FSI_DIM) for the particles it received, and its acoustic
+ * impedance rho0 c0 (one number: what the solid needs to answer the fluid within a
+ * window, docs/coupling.md). Initialise with designated initialisers: fields may be
+ * added. */
 typedef struct {
     int n;
     int32_t *id;
     double *position;
     double *velocity;
     double *acceleration;
-    double *volume;
+    double *volume;             /* [m^FSI_DIM], the particle's reference volume */
+    double *density;            /* [kg/m^3], the solid's current density at the particle
+                                 * (the fluid needs the solid's mass, density * volume) */
     double *pressure;
     double *force;
     double impedance;           /* [Pa s/m], fluid only */

@@ -3,8 +3,10 @@
 #ifndef FSI_PROTOCOL_H
 #define FSI_PROTOCOL_H
 
-/* Bump when proto/fsi.lcm or the rules below change incompatibly. */
-#define FSI_PROTOCOL_VERSION 2
+/* Bump when proto/fsi.lcm or the rules below change incompatibly. History (also in
+ * docs/protocol.md): version 2 added impedance to fluid_load_t, version 3 added
+ * density to solid_state_t. */
+#define FSI_PROTOCOL_VERSION 3
 
 /* Message kinds; each travels on its own channel (fsi_msg_channel). */
 typedef enum {

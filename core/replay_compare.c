@@ -66,7 +66,8 @@ static int describe_fields(fsi_msg_type type, const fsi_message *a, const fsi_me
                                      why, len) ||
                first_real_difference("acceleration", x->acceleration, y->acceleration,
                                      x->n_components, why, len) ||
-               first_real_difference("volume", x->volume, y->volume, x->n, why, len);
+               first_real_difference("volume", x->volume, y->volume, x->n, why, len) ||
+               first_real_difference("density", x->density, y->density, x->n, why, len);
     }
     if (type == FSI_MSG_FLUID_LOAD) {
         const fsi_fluid_load_t *x = &a->fluid_load, *y = &b->fluid_load;

@@ -75,7 +75,8 @@ int main(void)
         fsi_timer_start(&timers, t_loads);
         dashpot_loads(&l, &solid, damping, stiffness);
         fsi_timer_stop(&timers, t_loads);
-        fsi_interface reply = {solid.n, solid.id, NULL, NULL, NULL, NULL, l.pressure, l.force, 0.0};
+        fsi_interface reply = {.n = solid.n, .id = solid.id, .pressure = l.pressure,
+                               .force = l.force};
         fsi_write_interface(p, &reply);
         fsi_set_probe(p, probe_fy, solid.n > 0 ? l.force[1] : 0.0);
         /* The frame at the window's end shows the loads applied during it. */

@@ -19,7 +19,8 @@ typedef struct {
     double mass, time_step;
     double *stiffness;       /* per particle [N/m] */
     int32_t *id;
-    double *position, *velocity, *acceleration, *volume;   /* n * FSI_DIM, n */
+    double *position, *velocity, *acceleration;             /* n * FSI_DIM */
+    double *volume, *density;   /* n: a lattice cell each, mass / volume [kg/m^3] */
     double *load;            /* force from the fluid, held over the window */
 } springs;
 
@@ -45,8 +46,9 @@ static int springs_init(springs *s, const fsi_case *c)
     s->acceleration = calloc(v, sizeof(double));
     s->load = calloc(v, sizeof(double));
     s->volume = calloc(n, sizeof(double));
+    s->density = calloc(n, sizeof(double));
     if (!s->stiffness || !s->id || !s->position || !s->velocity || !s->acceleration ||
-        !s->load || !s->volume)
+        !s->load || !s->volume || !s->density)
         return -1;
     for (int i = 0; i < s->n; i++) {
         s->stiffness[i] = k * (1.0 + (s->n > 1 ? spread * i / (s->n - 1) : 0.0));
@@ -54,6 +56,7 @@ static int springs_init(springs *s, const fsi_case *c)
         s->position[i * FSI_DIM] = i * spacing;
         UY(s, i) = u0;
         s->volume[i] = pow(spacing, FSI_DIM);
+        s->density[i] = s->mass / s->volume[i];
         AY(s, i) = -s->stiffness[i] * u0 / s->mass;
     }
     return 0;
@@ -68,6 +71,7 @@ static void springs_free(springs *s)
     free(s->acceleration);
     free(s->load);
     free(s->volume);
+    free(s->density);
 }
 
 /* Loads arrive for the particles we sent, by id. */
@@ -140,13 +144,17 @@ int main(void)
     fsi_timers timers = {0};
     int t_solve = fsi_timer_index(&timers, "solid_advance");
     int t_output = fsi_timer_index(&timers, "output");
-    fsi_interface state = {s.n, s.id, s.position, s.velocity, s.acceleration, s.volume,
-                           NULL, NULL, 0.0};
+    fsi_interface state = {.n = s.n, .id = s.id, .position = s.position,
+                           .velocity = s.velocity, .acceleration = s.acceleration,
+                           .volume = s.volume, .density = s.density};
     fsi_interface loads;
 
     while (fsi_ongoing(p)) {
         double dt = fsi_window(p);
-        fsi_write_interface(p, &state);
+        if (fsi_write_interface(p, &state) != 0) {
+            fsi_abort(p, "cannot publish the state of window %d", fsi_window_index(p));
+            break;
+        }
         fsi_read_interface(p, &loads);
         if (take_loads(&s, &loads) != 0) {
             fsi_abort(p, "load for an unknown particle id in window %d", fsi_window_index(p));

@@ -42,7 +42,8 @@ static int reserve(fluid_boundary *b, int n)
 static int first_unusable(const fsi_interface *solid)
 {
     for (int i = 0; i < solid->n; i++) {
-        int ok = isfinite(solid->volume[i]) && solid->volume[i] > 0.0;
+        int ok = isfinite(solid->volume[i]) && solid->volume[i] > 0.0 &&
+                 isfinite(solid->density[i]) && solid->density[i] > 0.0;
         for (int d = 0; d < FSI_DIM; d++) {
             const int k = i * FSI_DIM + d;
             ok = ok && isfinite(solid->position[k]) && isfinite(solid->velocity[k]) &&
@@ -59,16 +60,17 @@ int fluid_boundary_set(fluid_boundary *b, fluid_particles *p, const fsi_interfac
 {
     const int m = solid->n;
     if (m < 0 || (m > 0 && (!solid->id || !solid->position || !solid->velocity ||
-                            !solid->volume))) {
-        snprintf(msg, msg_size, "the solid's interface message lacks positions, velocities "
-                 "or volumes (%d particles)", m);
+                            !solid->volume || !solid->density))) {
+        snprintf(msg, msg_size, "the solid's interface message lacks positions, velocities, "
+                 "volumes or densities (%d particles)", m);
         return -1;
     }
     const int bad = first_unusable(solid);
     if (bad >= 0) {
         snprintf(msg, msg_size, "the solid's interface particle %d has a non-finite position, "
-                 "velocity or acceleration, or a volume that is not positive (%g)",
-                 solid->id[bad], solid->volume[bad]);
+                 "velocity or acceleration, or a volume (%g m^%d) or density (%g kg/m^3) that "
+                 "is not positive", solid->id[bad], solid->volume[bad], FSI_DIM,
+                 solid->density[bad]);
         return -1;
     }
     if (reserve(b, m) != 0 || fluid_particles_resize(p, b->n_fixed + m) != 0) {
@@ -90,6 +92,7 @@ int fluid_boundary_set(fluid_boundary *b, fluid_particles *p, const fsi_interfac
         p->id[i] = solid->id[k];
         p->flags[i] = FLUID_PARTICLE_MOVING_BOUNDARY;
         p->volume[i] = solid->volume[k];
+        p->boundary_density[i] = solid->density[k];
         p->density[i] = rho0;
         p->mass[i] = rho0 * solid->volume[k];
         p->pressure[i] = 0.0;

@@ -35,10 +35,11 @@ void fluid_boundary_init(fluid_boundary *b, int n_fixed);
 void fluid_boundary_free(fluid_boundary *b);
 
 /* Replaces the tail of p (p->n becomes n_fixed + solid->n) with the solid's particles:
- * id, position, velocity, acceleration and volume V0 from solid, kind
- * FLUID_PARTICLE_MOVING_BOUNDARY, density rho0 and mass rho0 V0 until the scheme
- * interpolates them (000 Eqs. 52-54). Returns 0, or -1 with msg (a position, velocity
- * or acceleration not finite, a volume not positive, memory) with p and b unchanged. */
+ * id, position, velocity, acceleration, volume V0 and the solid's density
+ * (p->boundary_density) from solid, kind FLUID_PARTICLE_MOVING_BOUNDARY, density rho0
+ * and mass rho0 V0 until the scheme interpolates them (000 Eqs. 52-54). Returns 0, or
+ * -1 with msg (a position, velocity or acceleration not finite, a volume or density
+ * not positive, memory) with p and b unchanged. */
 int fluid_boundary_set(fluid_boundary *b, fluid_particles *p, const fsi_interface *solid,
                        double rho0, char *msg, size_t msg_size);
 

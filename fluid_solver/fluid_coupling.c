@@ -14,6 +14,8 @@ void fluid_coupling_init(fluid_coupling *c, int n_fixed, double impedance)
     fluid_boundary_init(&c->boundary, n_fixed);
     fsi_grid_init(&c->solid_grid);
     c->impedance = impedance;
+    c->density_min = INFINITY;
+    c->density_max = -INFINITY;
 }
 
 void fluid_coupling_free(fluid_coupling *c)
@@ -48,6 +50,10 @@ int fluid_coupling_start_window(fluid_coupling *c, fluid_particles *p,
     }
     if (fluid_boundary_set(&c->boundary, p, solid, rho0, msg, msg_size) != 0)
         return -1;
+    for (int k = 0; k < solid->n; k++) {
+        c->density_min = fmin(c->density_min, solid->density[k]);
+        c->density_max = fmax(c->density_max, solid->density[k]);
+    }
     c->t_window = t0;
     if (solid->n > c->impulse_capacity || !c->impulse) {
         const size_t cap = fsi_grown_capacity((size_t)solid->n);
@@ -126,8 +132,8 @@ int fluid_coupling_publish(fluid_coupling *c, fsi_participant *part,
         snprintf(msg, msg_size, "out of memory for the loads of %d particles", m);
         return -1;
     }
-    fsi_interface loads = {m, c->out_id, NULL, NULL, NULL, NULL, c->out_pressure, c->out_force,
-                           c->impedance};
+    fsi_interface loads = {.n = m, .id = c->out_id, .pressure = c->out_pressure,
+                           .force = c->out_force, .impedance = c->impedance};
     if (fsi_write_interface(part, &loads) != 0) {
         snprintf(msg, msg_size, "cannot publish the fluid loads (%d particles)", m);
         return -1;

@@ -45,6 +45,10 @@ typedef struct {
                                      * [N s], summed from the forces themselves, not from
                                      * 'impulse': the solid's total of what it received
                                      * must equal it (tests/system/test_coupled_plate.sh) */
+    double density_min, density_max;    /* the solid's density as received, least and
+                                         * greatest over every particle of every window
+                                         * [kg/m^3] (+-inf before any): logged, for the
+                                         * solid's log of what it sent */
     fsi_neighbour_grid solid_grid;  /* the boundary particles, for the penetration check */
 } fluid_coupling;
 

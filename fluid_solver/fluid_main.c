@@ -294,6 +294,7 @@ static int reorder_particles(fluid_run *s)
     fsi_permute_rows(p->density, sorted, n, sizeof *p->density, scratch);
     fsi_permute_rows(p->pressure, sorted, n, sizeof *p->pressure, scratch);
     fsi_permute_rows(p->boundary_acceleration, sorted, n, vec, scratch);
+    fsi_permute_rows(p->boundary_density, sorted, n, sizeof *p->boundary_density, scratch);
     fsi_permute_rows(p->flags, sorted, n, sizeof *p->flags, scratch);
     fsi_permute_rows(s->free_slip, sorted, n, sizeof *s->free_slip, scratch);
     fsi_permute_rows(s->order, sorted, n, sizeof *s->order, scratch);
@@ -823,6 +824,9 @@ int main(void)
                      s.coupling.n_windows, s.inside_max, s.inside_windows,
                      s.coupling.work_on_fluid);
         if (s.coupling.n_windows > 0) {
+            /* All 17 digits: the solid logs what it sent, and the two must be equal. */
+            fsi_info("interface: solid density received %.17g to %.17g kg/m^3",
+                     s.coupling.density_min, s.coupling.density_max);
             char j[FSI_VECTOR_TEXT_SIZE], p0[FSI_VECTOR_TEXT_SIZE], p1[FSI_VECTOR_TEXT_SIZE];
             double momentum[FSI_DIM];
             fluid_momentum(&s.p, momentum);

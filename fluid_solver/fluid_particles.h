@@ -49,6 +49,12 @@ typedef struct {
     double *boundary_acceleration; /* a_S of a wall or moving boundary particle (000
                              * Eq. 52): its prescribed or received acceleration; 0 for
                              * fluid particles and fixed walls [m/s^2] */
+    double *boundary_density; /* the density of the solid a moving boundary particle
+                             * belongs to, as received [kg/m^3]; 0 for fluid and wall
+                             * particles. Times volume it is the solid particle's mass
+                             * (up to its volume ratio J where the solid's density changes,
+                             * docs/protocol.md); density and mass above are the fluid's
+                             * interpolated ones (000 Eqs. 52-54). */
     uint8_t *flags;         /* FLUID_PARTICLE_* */
 } fluid_particles;
 
@@ -74,6 +80,7 @@ static inline void fluid_particles_free(fluid_particles *p)
     free(p->density);
     free(p->pressure);
     free(p->boundary_acceleration);
+    free(p->boundary_density);
     free(p->flags);
     *p = (fluid_particles){0};
 }
@@ -96,9 +103,10 @@ static inline int fluid_particles_alloc(fluid_particles *p, int n, double spacin
     p->density = calloc(m, sizeof *p->density);
     p->pressure = calloc(m, sizeof *p->pressure);
     p->boundary_acceleration = calloc(m * FSI_DIM, sizeof *p->boundary_acceleration);
+    p->boundary_density = calloc(m, sizeof *p->boundary_density);
     p->flags = calloc(m, sizeof *p->flags);
     if (!p->id || !p->x || !p->v || !p->mass || !p->volume || !p->density || !p->pressure ||
-        !p->boundary_acceleration || !p->flags) {
+        !p->boundary_acceleration || !p->boundary_density || !p->flags) {
         fluid_particles_free(p);
         return -1;
     }
@@ -126,6 +134,7 @@ static inline int fluid_particles_resize(fluid_particles *p, int n)
     memcpy(q.pressure, p->pressure, keep * sizeof *q.pressure);
     memcpy(q.boundary_acceleration, p->boundary_acceleration,
            keep * FSI_DIM * sizeof *q.boundary_acceleration);
+    memcpy(q.boundary_density, p->boundary_density, keep * sizeof *q.boundary_density);
     memcpy(q.flags, p->flags, keep * sizeof *q.flags);
     fluid_particles_free(p);
     *p = q;

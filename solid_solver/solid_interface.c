@@ -21,15 +21,18 @@ int solid_interface_init(solid_interface_buffers *b, int n_particles)
     b->state.velocity = malloc(v * sizeof(double));
     b->state.acceleration = malloc(v * sizeof(double));
     b->state.volume = malloc(n * sizeof(double));
+    b->state.density = malloc(n * sizeof(double));
     b->x_window = malloc(v * sizeof(double));
     b->v_mean = calloc(v, sizeof(double));   /* read (times 0) before a first gather */
     if (!b->surface || !b->band || !b->received || !b->state.id || !b->state.position ||
-        !b->state.velocity || !b->state.acceleration || !b->state.volume || !b->x_window ||
-        !b->v_mean) {
+        !b->state.velocity || !b->state.acceleration || !b->state.volume ||
+        !b->state.density || !b->x_window || !b->v_mean) {
         solid_interface_free(b);
         return -1;
     }
     b->capacity = n_particles;
+    b->density_min = INFINITY;
+    b->density_max = -INFINITY;
     return 0;
 }
 
@@ -43,6 +46,7 @@ void solid_interface_free(solid_interface_buffers *b)
     free(b->state.velocity);
     free(b->state.acceleration);
     free(b->state.volume);
+    free(b->state.density);
     free(b->x_window);
     free(b->v_mean);
     memset(b, 0, sizeof *b);
@@ -106,7 +110,7 @@ int solid_interface_band(solid_interface_buffers *b, const solid_particles *p, d
 }
 
 int solid_interface_gather(solid_interface_buffers *b, const solid_particles *p,
-                           double dt_last)
+                           const double *density, double dt_last)
 {
     const int n_all = p->n < b->capacity ? p->n : b->capacity;
     const int have_mean = b->have_x_window && dt_last > 0.0;
@@ -133,6 +137,9 @@ int solid_interface_gather(solid_interface_buffers *b, const solid_particles *p,
             b->state.acceleration[n * FSI_DIM + d] = a_mean[d];
         }
         b->state.volume[n] = p->volume[i];
+        b->state.density[n] = density[i];
+        b->density_min = fmin(b->density_min, density[i]);
+        b->density_max = fmax(b->density_max, density[i]);
         n++;
     }
     b->have_x_window = 1;

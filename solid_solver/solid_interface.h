@@ -27,12 +27,17 @@ typedef struct {
                                  * solid's (solid_interface_damping) */
     uint8_t *received;          /* per particle: a load arrived (duplicate check) */
     fsi_interface state;        /* what is published: n, id, position, velocity,
-                                 * acceleration, volume (pressure, force NULL) */
+                                 * acceleration, volume, density (pressure, force
+                                 * NULL) */
     /* Window means (solid_interface_gather): every particle's position at the last
      * window's start and its mean velocity over the window before, FSI_DIM each. */
     double *x_window, *v_mean;
     int have_x_window;          /* x_window holds a gather's positions */
     double dt_mean;             /* the window v_mean is over [s]; 0: no mean yet */
+    double density_min, density_max;    /* the density sent, least and greatest over
+                                         * every particle of every gather [kg/m^3]
+                                         * (+-inf before any): logged, for the fluid's
+                                         * log of what it received */
 } solid_interface_buffers;
 
 int solid_interface_init(solid_interface_buffers *b, int n_particles);
@@ -63,19 +68,20 @@ int solid_interface_band(solid_interface_buffers *b, const solid_particles *p, d
 /* Copies the particles with b->surface[i] or b->band[i] set into b->state at the start
  * of a window that follows one of length dt_last (0 for the first); returns its n.
  *
- * Position is the particle's. Velocity and acceleration are the means over the
- * windows that ended now, not the instants: the fluid samples the solid once per
- * window, and the solid's particle modes are far faster than that (their period is
- * ~ 2 dx / c_solid, micro-seconds in a metal plate), so an instantaneous sample is
- * aliased noise that the fluid's boundary condition (000 Eqs. 50-52) would turn into
- * pressure noise and feed back as load. The mean velocity (x_k - x_{k-1}) / dt_{k-1}
- * is what carries the body to its next position; the mean acceleration is the change
- * of the last two mean velocities over the time between their midpoints. Until a
- * window has passed the instants are sent, and the acceleration is 0 until two have
- * (both lag the instant by half a window, which the windows' brevity against the
- * body's own modes makes harmless). */
+ * Position, volume (the reference one) and density (density[i], p->n values: the
+ * model's, solid_model_density) are the particle's. Velocity and acceleration are the
+ * means over the windows that ended now, not the instants: the fluid samples the solid
+ * once per window, and the solid's particle modes are far faster than that (their
+ * period is ~ 2 dx / c_solid, micro-seconds in a metal plate), so an instantaneous
+ * sample is aliased noise that the fluid's boundary condition (000 Eqs. 50-52) would
+ * turn into pressure noise and feed back as load. The mean velocity
+ * (x_k - x_{k-1}) / dt_{k-1} is what carries the body to its next position; the mean
+ * acceleration is the change of the last two mean velocities over the time between
+ * their midpoints. Until a window has passed the instants are sent, and the
+ * acceleration is 0 until two have (both lag the instant by half a window, which the
+ * windows' brevity against the body's own modes makes harmless). */
 int solid_interface_gather(solid_interface_buffers *b, const solid_particles *p,
-                           double dt_last);
+                           const double *density, double dt_last);
 
 /* Takes the fluid's loads: force (n_particles * FSI_DIM) and pressure (n_particles)
  * are zeroed, then set for every id in 'in'. Returns 0, or -1 with a message naming

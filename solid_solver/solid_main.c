@@ -289,7 +289,8 @@ static int exchange(solid_run *s, fsi_participant *part, double dt_last)
     memset(s->iface.surface, 0, (size_t)s->iface.capacity);
     if (fsi_coupled(part)) {
         solid_model_surface(s->model, &s->p, s->iface.surface);
-        solid_interface_gather(&s->iface, &s->p, dt_last);
+        solid_interface_gather(&s->iface, &s->p, solid_model_density(s->model, &s->p),
+                               dt_last);
     } else {
         s->iface.state.n = 0;
     }
@@ -560,6 +561,9 @@ int main(void)
                      "velocity sent %.9g J, work over the solid's motion %.9g J",
                      fsi_vector_text(j, sizeof j, s.fluid_impulse), s.fluid_work_at_sent,
                      s.fluid_work);
+            if (s.iface.density_min <= s.iface.density_max)    /* something was sent */
+                fsi_info("interface: density sent %.17g to %.17g kg/m^3", s.iface.density_min,
+                         s.iface.density_max);
         }
         /* One "bond update" is one directed bond through one internal-force call: the
          * unit bench/solid_validation.sh reports (docs/performance.md). Particle-steps

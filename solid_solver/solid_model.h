@@ -50,6 +50,14 @@ int solid_model_stateless(const solid_model *m);
  * points the fluid can reach. Returns how many. */
 int solid_model_surface(const solid_model *m, const solid_particles *p, uint8_t *surface);
 
+/* The density of every particle [kg/m^3] at the current positions, p->n values owned
+ * by the model or p, for the fluid (the structure's inertia in its pressure equation,
+ * solid_interface_gather): the model's current density where it integrates one
+ * (pseudo-spring SPH, 004 Eq. 14), else the material's, p->density (NOSB-PD and TLSPH
+ * are total-Lagrangian: mass per reference volume is all they keep). Valid until the
+ * next internal-force call. */
+const double *solid_model_density(const solid_model *m, const solid_particles *p);
+
 /* Writes the model's fields (stress, damage, plastic strain, ...) into the open frame. */
 int solid_model_write_fields(const solid_model *m, fsi_h5_writer *out);
 

@@ -303,6 +303,13 @@ int64_t solid_model_interaction_count(const solid_model *m)
     return m->bonds.n_bonds;
 }
 
+/* Total Lagrangian: the reference density (solid_model.h). */
+const double *solid_model_density(const solid_model *m, const solid_particles *p)
+{
+    (void)m;
+    return p->density;
+}
+
 int64_t nosbpd_bond_count(const solid_model *m)
 {
     return m->bonds.n_bonds;

@@ -32,9 +32,9 @@ int64_t pseudo_spring_broken_links(const solid_model *m);   /* directed */
 /* Links of a point deep inside the lattice (8 in 2D, 26 in 3D). */
 int pseudo_spring_full_count(const solid_model *m);
 /* Per point: Cauchy stress (6 components, xx yy zz xy yz zx), writable so that tests
- * can pre-stress a body; current density; damage; intact and initial link counts. */
+ * can pre-stress a body; damage; intact and initial link counts. (The current density
+ * is solid_model_density's.) */
 double *pseudo_spring_stress(solid_model *m);
-const double *pseudo_spring_density(const solid_model *m);
 const double *pseudo_spring_damage(const solid_model *m);
 const int32_t *pseudo_spring_intact_count(const solid_model *m);
 const int32_t *pseudo_spring_initial_count(const solid_model *m);

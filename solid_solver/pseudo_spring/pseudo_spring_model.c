@@ -278,8 +278,10 @@ double *pseudo_spring_stress(solid_model *m)
     return m->stress;
 }
 
-const double *pseudo_spring_density(const solid_model *m)
+/* The continuity equation's current density (004 Eq. 14), which the sums use. */
+const double *solid_model_density(const solid_model *m, const solid_particles *p)
 {
+    (void)p;
     return m->density;
 }
 

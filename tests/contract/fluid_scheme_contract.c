@@ -89,6 +89,7 @@ static void scene_copy(scene *dst, const scene *src)
     memcpy(q->density, p->density, sca);
     memcpy(q->pressure, p->pressure, sca);
     memcpy(q->boundary_acceleration, p->boundary_acceleration, vec);
+    memcpy(q->boundary_density, p->boundary_density, sca);
     memcpy(q->flags, p->flags, (size_t)n);
     memcpy(dst->free_slip, src->free_slip, (size_t)n);
 }
@@ -420,6 +421,9 @@ static void build_droplet(scene *s)
             }
             p->x[k * FSI_DIM + d] = x;
         }
+        /* The slab's own density, as a solid sends it (fluid_boundary.c). */
+        if (p->flags[k] & FLUID_PARTICLE_MOVING_BOUNDARY)
+            p->boundary_density[k] = 2700.0;
         if (p->flags[k] & FLUID_PARTICLE_FLUID) {
             p->density[k] = RHO0 * (1.0 + 0.01 * uniform());
             p->mass[k] = p->density[k] * p->volume[k];
@@ -802,6 +806,7 @@ static void test_order(void)
         r.p.volume[k] = q.p.volume[i];
         r.p.density[k] = q.p.density[i];
         r.p.pressure[k] = q.p.pressure[i];
+        r.p.boundary_density[k] = q.p.boundary_density[i];
         r.p.flags[k] = q.p.flags[i];
         r.free_slip[k] = q.free_slip[i];
         for (int d = 0; d < FSI_DIM; d++) {

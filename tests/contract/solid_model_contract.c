@@ -12,7 +12,11 @@
  *  3. the stable step is positive, finite, and smaller for a stiffer material;
  *  4. the internal forces of a random small deformation sum to zero (and, in 2D, so
  *     do their moments);
- *  5. the forces do not depend, bit for bit, on the thread count. */
+ *  5. the forces do not depend, bit for bit, on the thread count;
+ *  6. the density the fluid is sent (solid_model_density) is the material's, bit for
+ *     bit, at creation, and after the uniform stretch of 2. lies between the
+ *     material's and rho0 (1 - 2 e) at every point (a continuity density falls by
+ *     about e, a total-Lagrangian model keeps rho0): positive, finite, in kg/m^3. */
 #include <math.h>
 #include <omp.h>
 #include <stdint.h>
@@ -192,6 +196,11 @@ static void test_uniform_stretch(void)
     const size_t vec = (size_t)p->n * FSI_DIM * sizeof(double);
     double *f = malloc(vec), *x_prev = malloc(vec);
     solid_model *m = make_model(p, E);
+    const double *rho0 = solid_model_density(m, p);
+    int differ = 0;
+    for (int i = 0; i < p->n; i++)
+        differ += memcmp(&rho0[i], &p->density[i], sizeof rho0[i]) != 0;
+    CHECK(differ == 0, "at creation the density of %d points is not the material's", differ);
     memcpy(x_prev, p->x, vec);
     for (int i = 0; i < p->n; i++)
         p->x[i * FSI_DIM] = (1.0 + e) * p->x0[i * FSI_DIM];
@@ -232,6 +241,16 @@ static void test_uniform_stretch(void)
     for (int d = 0; d < FSI_DIM; d++)
         CHECK(fabs(sum[d]) <= 1e-12 * mag, "uniform stretch: forces sum to %.3g N along %d",
               sum[d], d);
+    const double *rho = solid_model_density(m, p);
+    double rho_min = INFINITY, rho_max = -INFINITY;
+    for (int i = 0; i < p->n; i++) {
+        rho_min = fmin(rho_min, rho[i]);
+        rho_max = fmax(rho_max, rho[i]);
+    }
+    printf("uniform stretch e = %g: density sent %.9g to %.9g kg/m^3 (rho0 %g)\n", e, rho_min,
+           rho_max, RHO);
+    CHECK(rho_min >= RHO * (1.0 - 2.0 * e) && rho_max <= RHO, "uniform stretch: density "
+          "%.9g to %.9g kg/m^3, not within [rho0 (1 - 2 e), rho0]", rho_min, rho_max);
     free(f);
     free(x_prev);
     solid_model_free(m);

@@ -1,7 +1,10 @@
 /* The replay transport (core/bus_replay.h) on a hand-made traffic log: which
  * recorded messages a participant gets and when, what is compared and what is
- * not, a message recorded late because it was lost and resent, and the verdict. */
+ * not, a message recorded late because it was lost and resent, and the verdict;
+ * a solid state whose density differs from the recorded one in the last bit is
+ * reported by that field. */
 #include <lcm/eventlog.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -11,31 +14,14 @@
 #include "messages.h"
 
 #include "unit_check.h"
+#include "unit_traffic_log.h"
 
 #define RUN 4242
 
-static void put(lcm_eventlog_t *log, fsi_msg_type type, void *msg, const char *sender,
-                int64_t run_id, int window, int64_t seq)
-{
-    fsi_header_t *h = msg;
-    h->protocol_version = FSI_PROTOCOL_VERSION;
-    h->run_id = run_id;
-    h->window = window;
-    h->seq = seq;
-    h->sender = (char *)sender;
-    int len = fsi_message_encoded_size(type, msg);
-    char *bytes = malloc((size_t)len);
-    fsi_message_encode(type, msg, bytes, len);
-    lcm_eventlog_event_t e = {0};
-    e.channel = (char *)fsi_msg_channel(type);
-    e.channellen = (int32_t)strlen(e.channel);
-    e.data = bytes;
-    e.datalen = len;
-    lcm_eventlog_write_event(log, &e);
-    free(bytes);
-}
-
 static double probe = 0.5, force[2] = {1.0, -2.0}, pressure[1] = {3.0};
+/* Three components, enough for FSI_DIM 2 or 3. */
+static double state_x[3] = {0.1, 0.2, 0.3}, state_v[3] = {0.0, -1e-3, 0.0},
+              state_a[3] = {0.0, 9.81, 0.0}, state_volume[1] = {1e-4};
 static int32_t ids[1] = {7};
 static char *probe_names[1] = {"p"};
 static char *names[2] = {"fluid", "solid"}, *roles[2] = {"fluid", "solid"};
@@ -99,31 +85,31 @@ static void write_log(const char *path)
 {
     lcm_eventlog_t *log = lcm_eventlog_create(path, "w");
     fsi_register_t r = reg("recorded-host", 100);
-    put(log, FSI_MSG_REGISTER, &r, "fluid", RUN, -1, 1);
+    unit_log_put(log, FSI_MSG_REGISTER, &r, "fluid", RUN, -1, 1);
     fsi_register_t again = reg("recorded-host", 100);
-    put(log, FSI_MSG_REGISTER, &again, "fluid", RUN, -1, 2);
+    unit_log_put(log, FSI_MSG_REGISTER, &again, "fluid", RUN, -1, 2);
     fsi_welcome_t w = welcome("solid");
-    put(log, FSI_MSG_WELCOME, &w, "coupler", RUN, -1, 1);
+    unit_log_put(log, FSI_MSG_WELCOME, &w, "coupler", RUN, -1, 1);
     w = welcome("fluid");
-    put(log, FSI_MSG_WELCOME, &w, "coupler", RUN, -1, 2);
+    unit_log_put(log, FSI_MSG_WELCOME, &w, "coupler", RUN, -1, 2);
     fsi_step_t s0 = step(0.0, 0.0);
-    put(log, FSI_MSG_STEP, &s0, "coupler", RUN, 0, 3);
+    unit_log_put(log, FSI_MSG_STEP, &s0, "coupler", RUN, 0, 3);
     fsi_heartbeat_t hb = {0};
     hb.state = FSI_STATE_RUNNING;
-    put(log, FSI_MSG_HEARTBEAT, &hb, "coupler", RUN, 0, 4);
+    unit_log_put(log, FSI_MSG_HEARTBEAT, &hb, "coupler", RUN, 0, 4);
     fsi_solid_state_t ss = {0};
     ss.dim = FSI_DIM;
-    put(log, FSI_MSG_SOLID_STATE, &ss, "solid", RUN, 0, 1);
+    unit_log_put(log, FSI_MSG_SOLID_STATE, &ss, "solid", RUN, 0, 1);
     double recorded_probe = probe;
     fsi_done_t d = done(&recorded_probe);
-    put(log, FSI_MSG_DONE, &d, "fluid", RUN, 0, 5);
+    unit_log_put(log, FSI_MSG_DONE, &d, "fluid", RUN, 0, 5);
     fsi_fluid_load_t l = load();
-    put(log, FSI_MSG_FLUID_LOAD, &l, "fluid", RUN, 0, 3);
+    unit_log_put(log, FSI_MSG_FLUID_LOAD, &l, "fluid", RUN, 0, 3);
     fsi_step_t foreign = step(9.0, 9.0);
-    put(log, FSI_MSG_STEP, &foreign, "coupler", RUN + 1, 1, 9);
+    unit_log_put(log, FSI_MSG_STEP, &foreign, "coupler", RUN + 1, 1, 9);
     fsi_step_t s1 = step(0.0, 1e-3);
-    put(log, FSI_MSG_STEP, &s1, "coupler", RUN, 1, 5);
-    put(log, FSI_MSG_FLUID_LOAD, &l, "fluid", RUN, 0, 3);
+    unit_log_put(log, FSI_MSG_STEP, &s1, "coupler", RUN, 1, 5);
+    unit_log_put(log, FSI_MSG_FLUID_LOAD, &l, "fluid", RUN, 0, 3);
     lcm_eventlog_destroy(log);
 }
 
@@ -134,19 +120,20 @@ static void write_late_input_log(const char *path)
 {
     lcm_eventlog_t *log = lcm_eventlog_create(path, "w");
     fsi_welcome_t w = welcome("solid");
-    put(log, FSI_MSG_WELCOME, &w, "coupler", RUN, -1, 1);
+    unit_log_put(log, FSI_MSG_WELCOME, &w, "coupler", RUN, -1, 1);
     fsi_step_t s0 = step(0.0, 0.0);
-    put(log, FSI_MSG_STEP, &s0, "coupler", RUN, 0, 2);
-    fsi_solid_state_t ss = {0};
-    ss.dim = FSI_DIM;
-    put(log, FSI_MSG_SOLID_STATE, &ss, "solid", RUN, 0, 1);
+    unit_log_put(log, FSI_MSG_STEP, &s0, "coupler", RUN, 0, 2);
+    double density = 2700.0;
+    fsi_solid_state_t ss =
+        unit_solid_state(1, ids, state_x, state_v, state_a, state_volume, &density);
+    unit_log_put(log, FSI_MSG_SOLID_STATE, &ss, "solid", RUN, 0, 1);
     double value = probe;
     fsi_done_t d = done(&value);
-    put(log, FSI_MSG_DONE, &d, "solid", RUN, 0, 2);
+    unit_log_put(log, FSI_MSG_DONE, &d, "solid", RUN, 0, 2);
     fsi_step_t s1 = step(0.0, 1e-3);
-    put(log, FSI_MSG_STEP, &s1, "coupler", RUN, 1, 3);
+    unit_log_put(log, FSI_MSG_STEP, &s1, "coupler", RUN, 1, 3);
     fsi_fluid_load_t l = load();
-    put(log, FSI_MSG_FLUID_LOAD, &l, "fluid", RUN, 0, 1);
+    unit_log_put(log, FSI_MSG_FLUID_LOAD, &l, "fluid", RUN, 0, 1);
     lcm_eventlog_destroy(log);
 }
 
@@ -171,27 +158,13 @@ static void due(fsi_replay *r, char *kinds, size_t len)
 static void publish_as(fsi_replay *r, const char *self, fsi_msg_type type, void *msg,
                        int window, int64_t seq)
 {
-    fsi_header_t *h = msg;
-    h->protocol_version = FSI_PROTOCOL_VERSION;
-    h->run_id = RUN;
-    h->window = window;
-    h->seq = seq;
-    h->sender = (char *)self;
+    unit_set_header(msg, self, RUN, window, seq);
     fsi_replay_compare(r, type, msg);
 }
 
 static void publish(fsi_replay *r, fsi_msg_type type, void *msg, int window, int64_t seq)
 {
     publish_as(r, "fluid", type, msg, window, seq);
-}
-
-static void read_report(const char *path, char *text, size_t len)
-{
-    FILE *f = fopen(path, "r");
-    size_t n = f ? fread(text, 1, len - 1, f) : 0;
-    text[n] = '\0';
-    if (f)
-        fclose(f);
 }
 
 int main(void)
@@ -232,7 +205,7 @@ int main(void)
     CHECK(strcmp(kinds, "s") == 0, "due after the done: '%s' (step 1 only)", kinds);
     CHECK(fsi_replay_finish(r) == 1, "differences: expected 1 (the probe)");
     fsi_replay_free(r);
-    read_report(report, text, sizeof text);
+    unit_read_text(report, text, sizeof text);
     CHECK(strstr(text, "compared = 3\n") != NULL, "report: %s", text);
     CHECK(strstr(text, "differences = 1\n") != NULL, "report: %s", text);
     CHECK(strstr(text, "first_difference_window = 0\n") != NULL, "report: %s", text);
@@ -245,7 +218,7 @@ int main(void)
     publish(r, FSI_MSG_REGISTER, &mine, -1, 1);
     CHECK(fsi_replay_finish(r) == 2, "a replay that stopped early: expected 2 differences");
     fsi_replay_free(r);
-    read_report(report, text, sizeof text);
+    unit_read_text(report, text, sizeof text);
     CHECK(strstr(text, "missing = 2\n") != NULL, "report: %s", text);
     CHECK(strstr(text, "first_difference = done of window 0 is recorded but was not "
                        "published\n") != NULL,
@@ -260,8 +233,9 @@ int main(void)
         return unit_check_report("test_bus_replay");
     due(r, kinds, sizeof kinds);
     CHECK(strcmp(kinds, "ws") == 0, "late input: due at the start: '%s'", kinds);
-    fsi_solid_state_t state = {0};
-    state.dim = FSI_DIM;
+    double density = 2700.0;
+    fsi_solid_state_t state =
+        unit_solid_state(1, ids, state_x, state_v, state_a, state_volume, &density);
     publish_as(r, "solid", FSI_MSG_SOLID_STATE, &state, 0, 1);
     due(r, kinds, sizeof kinds);
     CHECK(strcmp(kinds, "") == 0, "late input: due to a drain before the done: '%s'", kinds);
@@ -274,5 +248,20 @@ int main(void)
     CHECK(strcmp(kinds, "s") == 0, "late input: due after the done: '%s'", kinds);
     CHECK(fsi_replay_finish(r) == 0, "late input: differences in an identical replay");
     fsi_replay_free(r);
+
+    /* The same window with the density one bit off: named as that field. */
+    r = fsi_replay_open(log_path, "solid", RUN);
+    due(r, kinds, sizeof kinds);
+    density = nextafter(2700.0, 3000.0);
+    state = unit_solid_state(1, ids, state_x, state_v, state_a, state_volume, &density);
+    publish_as(r, "solid", FSI_MSG_SOLID_STATE, &state, 0, 1);
+    due_as(r, 1, kinds, sizeof kinds);
+    publish_as(r, "solid", FSI_MSG_DONE, &solid_done, 0, 2);
+    CHECK(fsi_replay_finish(r) == 1, "a changed density: expected 1 difference");
+    fsi_replay_free(r);
+    unit_read_text(report, text, sizeof text);
+    CHECK(strstr(text, "first_difference = solid_state of window 0: density[0] = "
+                       "2700.0000000000005, recorded 2700\n") != NULL,
+          "report: %s", text);
     return unit_check_report("test_bus_replay");
 }

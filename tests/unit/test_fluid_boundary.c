@@ -1,13 +1,15 @@
 /* The fluid's moving boundary particles (fluid_solver/fluid_boundary.h), the set fed
  * from the coupling each window:
  *  - a set of solid particles lands in the tail after the fixed particles, which stay
- *    untouched, with the solid's ids, positions, velocities and volumes, kind
+ *    untouched, with the solid's ids, positions, velocities, volumes and densities
+ *    (boundary_density, bit for bit as sent; 0 on the fixed particles), kind
  *    MOVING_BOUNDARY and mass rho0 V0;
  *  - the set may grow, shrink and empty from one window to the next;
  *  - inside a window the tail moves at constant acceleration: x_k + v_k tau + a_k tau^2/2
  *    (exact up to round-off: tolerance 1e-14 m on positions of order 1 m);
- *  - a message with a non-finite position or a volume that is not positive is refused
- *    with the particle named, and nothing changes. */
+ *  - a message with a non-finite position, or a volume or density that is not positive,
+ *    is refused with the particle named, and one without densities is refused; nothing
+ *    changes. */
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
@@ -39,6 +41,8 @@ static int fixed_unchanged(const fluid_particles *p)
         for (int d = 0; d < FSI_DIM; d++)
             if (p->x[i * FSI_DIM + d] != 0.1 * i + d)
                 return 0;
+        if (p->boundary_density[i] != 0.0)
+            return 0;
     }
     return 1;
 }
@@ -46,7 +50,7 @@ static int fixed_unchanged(const fluid_particles *p)
 /* An interface message of m particles; arrays sized for 16. */
 typedef struct {
     int32_t id[16];
-    double x[16 * FSI_DIM], v[16 * FSI_DIM], a[16 * FSI_DIM], volume[16];
+    double x[16 * FSI_DIM], v[16 * FSI_DIM], a[16 * FSI_DIM], volume[16], density[16];
     fsi_interface msg;
 } solid_message;
 
@@ -55,13 +59,17 @@ static void make_message(solid_message *s, int m, int first_id)
     for (int k = 0; k < m; k++) {
         s->id[k] = first_id + k;
         s->volume[k] = 1e-4 * (k + 1);
+        /* Not round numbers: a density converted or recomputed on the way would show. */
+        s->density[k] = 2700.0 / 3.0 + 0.1 * first_id + 1e-3 * k;
         for (int d = 0; d < FSI_DIM; d++) {
             s->x[k * FSI_DIM + d] = 1.0 + 0.01 * k + 0.5 * d;
             s->v[k * FSI_DIM + d] = 0.3 * (d + 1) - 0.1 * k;
             s->a[k * FSI_DIM + d] = -9.81 * (d == 1) + 2.0 * k;
         }
     }
-    s->msg = (fsi_interface){m, s->id, s->x, s->v, s->a, s->volume, NULL, NULL, 0.0};
+    s->msg = (fsi_interface){.n = m, .id = s->id, .position = s->x, .velocity = s->v,
+                             .acceleration = s->a, .volume = s->volume,
+                             .density = s->density};
 }
 
 int main(void)
@@ -87,7 +95,8 @@ int main(void)
             const int i = N_FIXED + k;
             tail_ok &= p.id[i] == 100 * w + k && p.flags[i] == FLUID_PARTICLE_MOVING_BOUNDARY &&
                        p.volume[i] == s.volume[k] && p.mass[i] == rho0 * s.volume[k] &&
-                       p.density[i] == rho0;
+                       p.density[i] == rho0 &&
+                       memcmp(&p.boundary_density[i], &s.density[k], sizeof s.density[k]) == 0;
             for (int d = 0; d < FSI_DIM; d++)
                 tail_ok &= p.x[i * FSI_DIM + d] == s.x[k * FSI_DIM + d] &&
                            p.v[i * FSI_DIM + d] == s.v[k * FSI_DIM + d];
@@ -125,6 +134,21 @@ int main(void)
     CHECK(fluid_boundary_set(&b, &p, &s.msg, rho0, msg, sizeof msg) != 0 &&
               strstr(msg, "particle 603") && p.n == n_before,
           "a negative volume was not refused with the particle named (msg: %s)", msg);
+    make_message(&s, 4, 700);
+    s.density[1] = 0.0;
+    CHECK(fluid_boundary_set(&b, &p, &s.msg, rho0, msg, sizeof msg) != 0 &&
+              strstr(msg, "particle 701") && p.n == n_before,
+          "a zero density was not refused with the particle named (msg: %s)", msg);
+    make_message(&s, 4, 800);
+    s.density[2] = INFINITY;
+    CHECK(fluid_boundary_set(&b, &p, &s.msg, rho0, msg, sizeof msg) != 0 &&
+              strstr(msg, "particle 802") && p.n == n_before,
+          "an infinite density was not refused with the particle named (msg: %s)", msg);
+    make_message(&s, 4, 900);
+    s.msg.density = NULL;
+    CHECK(fluid_boundary_set(&b, &p, &s.msg, rho0, msg, sizeof msg) != 0 &&
+              strstr(msg, "densities") && p.n == n_before,
+          "a message without densities was not refused (msg: %s)", msg);
     CHECK(fixed_unchanged(&p), "a refused message changed the fixed particles");
 
     fluid_boundary_free(&b);

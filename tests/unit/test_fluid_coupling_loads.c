@@ -32,17 +32,20 @@ int main(void)
     /* The solid's interface particles, ids not in order (the loads go back in the
      * order they came). */
     int32_t id[N_SOLID];
-    double x[N_SOLID * FSI_DIM], v[N_SOLID * FSI_DIM], a[N_SOLID * FSI_DIM], vol[N_SOLID];
+    double x[N_SOLID * FSI_DIM], v[N_SOLID * FSI_DIM], a[N_SOLID * FSI_DIM], vol[N_SOLID],
+        rho[N_SOLID];
     for (int k = 0; k < N_SOLID; k++) {
         id[k] = 100 + (5 * k) % N_SOLID;
         vol[k] = 1e-4;
+        rho[k] = 2700.0;
         for (int d = 0; d < FSI_DIM; d++) {
             x[k * FSI_DIM + d] = 0.5 + 0.01 * k + 0.003 * d;
             v[k * FSI_DIM + d] = unit_uniform(&rng) - 0.5;
             a[k * FSI_DIM + d] = 0.0;
         }
     }
-    fsi_interface solid = {N_SOLID, id, x, v, a, vol, NULL, NULL, 0.0};
+    fsi_interface solid = {.n = N_SOLID, .id = id, .position = x, .velocity = v,
+                           .acceleration = a, .volume = vol, .density = rho};
     fluid_coupling c;
     fluid_coupling_init(&c, N_FIXED, rho0 * 30.0);
     char msg[256];

@@ -33,8 +33,9 @@ static int count_with_solid_spacing(double solid_dx, int *first)
     }
     int32_t id = 0;
     double x[FSI_DIM] = {0}, v[FSI_DIM] = {0}, a[FSI_DIM] = {0};
-    double volume = pow(solid_dx, FSI_DIM);
-    fsi_interface solid = {1, &id, x, v, a, &volume, NULL, NULL, 0.0};
+    double volume = pow(solid_dx, FSI_DIM), density = 2700.0;
+    fsi_interface solid = {.n = 1, .id = &id, .position = x, .velocity = v, .acceleration = a,
+                           .volume = &volume, .density = &density};
     fluid_coupling c;
     fluid_coupling_init(&c, 2, 0.0);
     char msg[256];

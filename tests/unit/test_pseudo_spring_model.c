@@ -6,7 +6,7 @@
  *  - the reference configuration gives exactly zero force;
  *  - a uniform stretch gives the Hooke stress at every point, edges and corners
  *    included (the corrected gradient is exact for a linear field), and the density
- *    of 004 Eq. 14;
+ *    of 004 Eq. 14 (solid_model_density: what the fluid is sent);
  *  - a rigid rotation leaves an unstressed body unstressed and rotates a pre-stress
  *    with the body (the Jaumann rate, 004 Eq. 17);
  *  - a link stretched beyond the failure strain breaks and stays broken when the
@@ -119,7 +119,7 @@ static void check_uniform_stretch(void)
     const double lambda = E * NU / ((1.0 + NU) * (1.0 - 2.0 * NU)), mu = E / (2.0 * (1.0 + NU));
     const double sxx = (lambda + 2.0 * mu) * ep, syy = lambda * ep;
     const double rho = RHO * (2.0 - ep) / (2.0 + ep);
-    const double *s = pseudo_spring_stress(m), *density = pseudo_spring_density(m);
+    const double *s = pseudo_spring_stress(m), *density = solid_model_density(m, p);
     double worst = 0.0, worst_rho = 0.0;
     for (int i = 0; i < p->n; i++) {
         const double *si = s + i * 6;

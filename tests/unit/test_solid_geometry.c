@@ -553,15 +553,18 @@ static void test_interface(void)
     solid_interface_buffers b;
     CHECK(solid_interface_init(&b, 3) == 0, "init");
     b.surface[0] = b.surface[2] = 1;
-    CHECK(solid_interface_gather(&b, &p, 0.0) == 2 && b.state.id[1] == 2 &&
-              b.state.position[FSI_DIM] == 2.0 && b.state.volume[1] == 3.0,
+    /* The density sent is the one given (a model's current one), not p's reference. */
+    const double current[3] = {7.0, 8.0, 9.0};
+    CHECK(solid_interface_gather(&b, &p, current, 0.0) == 2 && b.state.id[1] == 2 &&
+              b.state.position[FSI_DIM] == 2.0 && b.state.volume[1] == 3.0 &&
+              b.state.density[0] == 7.0 && b.state.density[1] == 9.0,
           "gather");
     double force[3 * FSI_DIM], pressure[3];
     int32_t ids[2] = {2, 0};
     double f[2 * FSI_DIM] = {0}, pr[2] = {5.0, 6.0};
     f[1] = -1.0;
     f[FSI_DIM + 1] = -2.0;
-    fsi_interface in = {2, ids, NULL, NULL, NULL, NULL, pr, f, 0.0};
+    fsi_interface in = {.n = 2, .id = ids, .pressure = pr, .force = f};
     char msg[256] = "";
     CHECK(solid_interface_take(&b, &in, &p, force, pressure, msg, sizeof msg) == 0, "%s", msg);
     CHECK(force[2 * FSI_DIM + 1] == -1.0 && force[1] == -2.0 && force[FSI_DIM + 1] == 0.0 &&
@@ -662,12 +665,12 @@ static void test_interface_band(void)
             deep = i;
     CHECK(deep >= 0, "no band point at depth 11.5 dx");
     if (deep >= 0) {
-        CHECK(solid_interface_gather(&b, &p, 0.0) == marked, "gather sends %d, want %d",
-              b.state.n, marked);
+        CHECK(solid_interface_gather(&b, &p, p.density, 0.0) == marked,
+              "gather sends %d, want %d", b.state.n, marked);
         int32_t ids[1] = {deep};
         double f[FSI_DIM] = {0}, pr[1] = {1.0};
         f[0] = 2.0;
-        fsi_interface in = {1, ids, NULL, NULL, NULL, NULL, pr, f, 0.0};
+        fsi_interface in = {.n = 1, .id = ids, .pressure = pr, .force = f};
         double *force = calloc((size_t)p.n * FSI_DIM, sizeof *force);
         double *pressure = calloc((size_t)p.n, sizeof *pressure);
         double *damping = calloc((size_t)p.n, sizeof *damping);
@@ -716,7 +719,7 @@ static void test_interface_window_means(void)
         x[0] = v0 * t + 0.5 * acc * t * t;
         v[0] = v0 + acc * t;
         a[0] = acc;
-        solid_interface_gather(&b, &p, dt_last);
+        solid_interface_gather(&b, &p, p.density, dt_last);
         const double sent_v = b.state.velocity[0], sent_a = b.state.acceleration[0];
         if (k <= 1) {
             CHECK(sent_v == v[0] && sent_a == a[0], "window %d: the instants (%g, %g)", k,
