@@ -67,9 +67,12 @@ static const fsi_key_spec keys[] = {
      "c0 the case's [fluid] sound speed, here only the contact's stiffness scale): it keeps "
      "particles without a Poisson equation of their own (surface, splash) out of the walls; "
      "0 turns it off."},
-    {"solid_density", FSI_KEY_REAL, "kg/m^3", "0", FSI_BOUND_MIN, 0, 0, NULL,
-     "PROTOTYPE: the solid's density, for its inertia in the Poisson equation; 0 couples "
-     "explicitly."},
+    {"solid_inertia", FSI_KEY_CHOICE, "-", "in_poisson", 0, 0, 0, "in_poisson|explicit",
+     "in_poisson: each solid particle's acceleration in its Poisson row is its received "
+     "one without the fluid's last load plus the load the solve gives it over its mass "
+     "(the structure's inertia in the PPE, 003 §2.3; stable against added mass); "
+     "explicit: the received acceleration as it is, which an incompressible fluid makes "
+     "unstable whenever the added mass exceeds the structure's (docs/isph.md, Coupling)."},
     {"neighbour_skin", FSI_KEY_REAL, "-", STR(FLUID_VERLET_SKIN), FSI_BOUND_MIN | FSI_BOUND_MAX, 0,
      1, NULL, "Skin of the candidate neighbour lists as a fraction of the support 2h; the "
      "results do not depend on it."},

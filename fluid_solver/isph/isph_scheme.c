@@ -62,7 +62,7 @@ struct fluid_scheme {
     double *viscous_loads;      /* the reaction of a_v's pair terms on the solid */
     double *u_star, *x_start, *v_start, *shift, *grad;
     double *solid_mass, *last_load; /* the solid's inertia in the Poisson equation */
-    double solid_density;       /* [kg/m^3]; 0: explicit coupling */
+    int explicit_solid;         /* 1: the solid's received acceleration as it is */
     double *x_fresh, *p_fresh;  /* positions and pressures of the last solve or step */
     int n_fresh;                /* their count; 0: none */
     int projecting;             /* 1 inside step 2 */
@@ -132,7 +132,7 @@ fluid_scheme *fluid_scheme_create(const fsi_case *c, const char *role,
     s->w_lattice = isph_lattice_kernel_sum(&s->kernel, p->spacing);
     s->spacing = p->spacing;
     s->rho0 = props->density;
-    s->solid_density = fsi_case_get_real(c, own, "solid_density", 0.0);
+    s->explicit_solid = fsi_case_choice_is(c, own, "solid_inertia", "explicit");
     s->nu0 = props->viscosity / props->density;
     memcpy(s->gravity, props->gravity, sizeof s->gravity);
     s->free_slip = props->free_slip;
@@ -270,10 +270,11 @@ static int solve(fluid_scheme *s, fluid_particles *p, const double *u_star, doub
                  size_t msg_size)
 {
     s->ppe.inertia = (isph_inertia){NULL, NULL};
-    if (s->solid_density > 0.0) {
+    if (!s->explicit_solid) {
+        /* m_S = rho_S V_S as the solid sent them (protocol version 3) */
         for (int i = 0; i < p->n; i++)
             s->solid_mass[i] = (p->flags[i] & FLUID_PARTICLE_MOVING_BOUNDARY)
-                                   ? s->solid_density * p->volume[i]
+                                   ? p->boundary_density[i] * p->volume[i]
                                    : 0.0;
         s->ppe.inertia = (isph_inertia){s->solid_mass, s->last_load};
     }

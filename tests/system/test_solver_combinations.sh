@@ -22,10 +22,12 @@
 #       sums add the same numbers in another order, so they agree to round-off; a
 #       load scaled, lost or given to the wrong particle on either side is off by far
 #       more). So that this is not 0 = 0, the fluid's horizontal impulse must be at
-#       least 10 % of the hydrostatic push on the plate's face over the run,
-#       rho g (H^2 - (H - h)^2) / 2 t = 0.198 N s (measured 23-24 %: above the
-#       plate's top the column's face is free and spills over it, so the pressure on
-#       the plate is well below hydrostatic). The works over the fluid's moving
+#       least 5 % of the hydrostatic push on the plate's face over the run,
+#       rho g (H^2 - (H - h)^2) / 2 t = 0.198 N s (measured 23-24 % for the weakly
+#       compressible fluids, which start from the hydrostatic pressure and relax
+#       acoustically; 9 % for ISPH, whose first projection gives the collapsing
+#       column's lower pressure at once: above the plate's top the column's face is
+#       free and spills over it). The works over the fluid's moving
 #       boundary and over the solid's own motion differ only by the one-window lag
 #       of the velocity the fluid sees (+1.5 to +2.1 % measured); 5 % is the sanity
 #       bound of test_coupled_plate;
@@ -43,14 +45,19 @@
 #       continuity density, which this soft plate's strains move by -0.7 to +1.4 %
 #       (measured); a density in other units, or another field in its place, is off by
 #       far more.
-# Incompressible fluids (ISPH) and explicit coupling: the fluid answers the plate's
-# motion with the whole added mass at once, about rho h^2 = 6 kg/m against the plate's
-# rho_s t h = 2.4 kg/m here, and a serial staggered scheme is then unstable whatever the
-# window (Causin, Gerbeau & Nobile 2005; docs/isph.md, "Coupling"). For such a fluid the
-# test asserts what must hold anyway: a run that finishes passes (a)-(c) but the work
-# bound of (a), whose lag grows with the window; a run that does not finish stops with
+# Incompressible fluids (ISPH): the fluid answers the plate's motion with the whole added
+# mass at once (about rho h^2 = 6 kg/m against the plate's rho_s t h = 2.4 kg/m here),
+# which makes a serial staggered scheme unstable whatever the window (Causin, Gerbeau &
+# Nobile 2005). ISPH puts each solid particle's inertia into its pressure equation
+# (docs/isph.md, "Coupling"), but the plate's elastic force stays the one of the window's
+# start: with windows much longer than the solid's step the lag still grows (C1 with
+# NOSB-PD: stable at 2e-4 s windows, works 2.6 % apart; unstable at 5e-4 s and at the
+# case's 1e-3 s). For such a fluid the test asserts what must hold anyway: a run that
+# finishes passes (a)-(c) but the work bound of (a), whose lag grows with the window
+# (TLSPH, pseudo-spring: 9 % at 1e-3 s windows); a run that does not finish stops with
 # the energy check's "the integration is unstable", every participant down, the output
-# written so far readable and finite. The implicit coupling of issue #22 is the remedy.
+# written so far readable and finite. The sub-iterated coupling of issue #22 is the
+# remedy.
 ADDED_MASS_LIMITED=" isph "
 source "$(dirname "$0")/lib.sh"
 PY=/usr/bin/python3
@@ -87,7 +94,7 @@ for part in ("fluid", "solid"):
                     sys.exit("%s.h5 frame %s: %s not finite" % (part, key, field))
 PY
       then
-        echo "$fluid + $solid: explicit coupling unstable by added mass, stopped cleanly: $(grep -o 'at t = [^:]*: the integration is unstable' "$out.txt" | head -1)"
+        echo "$fluid + $solid: coupled run unstable (windows long against the solid's step, added mass), stopped cleanly: $(grep -o 'at t = [^:]*: the integration is unstable' "$out.txt" | head -1)"
         continue
       fi
       cat "$out.txt"
@@ -169,8 +176,8 @@ check(abs(w_got - w_sent) <= 1e-6 * abs(w_sent), "work at the velocity sent: the
       "the fluid's %.9g J (bound: equal to 1e-6)" % (w_got, w_sent))
 H, h, rho, g = 0.292, 0.08, 1000.0, 9.81
 push = rho * g * (H ** 2 - (H - h) ** 2) / 2 * t_end
-check(j_sent[0] >= 0.1 * push, "the fluid's horizontal impulse on the plate %.4g N s is %.1f %% "
-      "of the hydrostatic push %.4g N s (bound at least 10 %%): the plate is hardly loaded"
+check(j_sent[0] >= 0.05 * push, "the fluid's horizontal impulse on the plate %.4g N s is %.1f %% "
+      "of the hydrostatic push %.4g N s (bound at least 5 %%): the plate is hardly loaded"
       % (j_sent[0], 100 * j_sent[0] / push, push))
 # (d) the density the solid sent is the density the fluid received.
 rho_got = re.search(r"interface: solid density received (\S+) to (\S+) kg/m\^3", fluid)
