@@ -355,11 +355,6 @@ static int setup(fluid_run *s, fsi_participant *part)
     if (!s->scheme)
         return -1;
     fluid_scheme_use_timers(s->scheme, &s->timers);
-    /* An incompressible fluid has no acoustic impedance: it answers the solid's motion
-     * with added mass, which the projection takes with the solid's inertia
-     * (docs/isph.md, "Coupling"). It sends none. */
-    if (!fluid_scheme_compressible(s->scheme))
-        s->coupling.impedance = 0.0;
     const char *start = fsi_case_get(c, ROLE, "initial_pressure");
     if (!start || strcmp(start, "zero") != 0)
         hydrostatic_start(s);
