@@ -51,7 +51,7 @@
 # Nobile 2005). ISPH puts each solid particle's inertia into its pressure equation
 # (docs/isph.md, "Coupling"), but the plate's elastic force stays the one of the window's
 # start: with windows much longer than the solid's step the lag still grows (C1 with
-# NOSB-PD: stable at 2e-4 s windows, works 2.6 % apart; unstable at 5e-4 s and at the
+# NOSB-PD: stable at 2e-4 s windows, works 1.3 % apart; unstable at 5e-4 s and at the
 # case's 1e-3 s). For such a fluid the test asserts what must hold anyway: a run that
 # finishes passes (a)-(c) but the work bound of (a), whose lag grows with the window
 # (TLSPH, pseudo-spring: 11 % at 1e-3 s windows); a run that does not finish stops with
