@@ -1,4 +1,4 @@
-/* The functions every fluid scheme folder implements (ulph/, wcsph/, later isph/), the
+/* The functions every fluid scheme folder implements (ulph/, wcsph/, isph/), the
  * way SWIFT keeps each hydro scheme behind the same small set of functions. The main
  * loop (fluid_main.c) owns the particles, the choice of the step, the coupling, probes
  * and output; a scheme owns what it needs between steps (neighbour lists, operators,
