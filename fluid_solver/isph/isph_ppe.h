@@ -4,13 +4,11 @@
  *   - a fluid particle a (003 Eqs. 15-16, Skillen's blending alpha_a of Eq. 17):
  *       A_aa p_a + alpha_a sum_b A_ab p_b = alpha_a (1 / dt) sum_b V_b (u*_b - u*_a) . B_a grad_a W_ab,
  *       A_ab = -c_ab, A_aa = sum_b c_ab, c_ab = (2 V_b / rho0) x_ab . (B_a grad_a W_ab) / |x_ab|^2,
- *     with - gamma max(0, crowding_a) / dt^2 added to the right-hand side: the
- *     divergence-free projection alone lets particles that have come closer than the
- *     lattice stay so (the density error accumulation 003 §2.1 names), and this
- *     relaxes them apart over about 1 / gamma steps (the density-invariance term of
- *     Hu & Adams 2007 with Asai et al. 2012's relaxation, for compression only: a
- *     particle near the surface has a short kernel sum, not a stretched neighbourhood);
- *     blended, for alpha_a < 1, with the free-surface condition applied where the
+ *     optionally with - gamma max(0, crowding_a) / dt^2 on the right-hand side (Hu &
+ *     Adams 2007's density invariance with Asai et al. 2012's relaxation, for
+ *     compression only: a particle near the surface has a short kernel sum, not a
+ *     stretched neighbourhood; gamma = crowding_relaxation, 0 by default: on F0 and F1
+ *     it did not help); blended, for alpha_a < 1, with the free-surface condition applied where the
  *     surface is, half a spacing (surface_offset) outside the particle along its
  *     normal n: p_a + surface_offset n . <grad p>_a = 0 (003 Eq. 2's gradient). A surface
  *     particle then carries the pressure of its depth below the surface, about
@@ -26,7 +24,8 @@
  *     divergence it counts with u*_S = v_S + dt (g - a_S): the velocity whose correction
  *     by the pressure gradient of that condition, rho0 (g - a_S), leaves the wall's own
  *     v_S (a fluid at rest on a floor sees no divergence, and the pressure is exactly
- *     hydrostatic);
+ *     hydrostatic). A solid particle of known mass has its acceleration taken
+ *     implicitly (isph_inertia below, boundary_row in isph_ppe.c).
  *     A wall or solid particle whose pressure comes out negative is held at p = 0 and
  *     the equation solved again (at most ISPH_WALL_PASSES times; the set carries over to
  *     the next projection): a wall pushes, never pulls;

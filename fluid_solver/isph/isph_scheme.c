@@ -250,6 +250,12 @@ static double stable_step(const fluid_scheme *s, double vmax, double amax)
     return dt;
 }
 
+/* The walls held at p = 0 (isph_ppe.h) when the set covers n particles, else NULL. */
+static const unsigned char *held_walls(const fluid_scheme *s, int n)
+{
+    return s->ppe.held && s->ppe.held_capacity >= n ? s->ppe.held : NULL;
+}
+
 /* 1 when p's positions and pressures are those the scheme left at its last solve or
  * step: the pressure is then the projection's for this state. */
 static int pressure_fresh(const fluid_scheme *s, const fluid_particles *p)
@@ -320,8 +326,7 @@ int fluid_scheme_rates(fluid_scheme *s, fluid_particles *p, double *drho_dt, dou
     phase(s, PHASE_OPERATORS, 1);
     isph_fields *f = &s->fields;
     isph_geometry(&s->pairs, p, s->w_lattice, f);
-    isph_free_surface(&s->pairs, p, s->ppe.held_capacity >= n ? s->ppe.held : NULL,
-                      s->surface_lower, s->surface_upper, s->kernel.h, f);
+    isph_free_surface(&s->pairs, p, held_walls(s, n), s->surface_lower, s->surface_upper, s->kernel.h, f);
     isph_wall_velocity(&s->pairs, p, s->free_slip, f);
     isph_velocity_gradient(&s->pairs, p, s->nu0, s->smagorinsky, s->kernel.h, f);
     phase(s, PHASE_OPERATORS, 0);
@@ -351,7 +356,7 @@ int fluid_scheme_rates(fluid_scheme *s, fluid_particles *p, double *drho_dt, dou
     }
     phase(s, PHASE_FORCES, 1);
     memset(s->pressure_acc, 0, (size_t)n * FSI_DIM * sizeof *s->pressure_acc);
-    isph_pressure_acceleration(&s->pairs, p, s->ppe.held, s->rho0, s->pressure_acc);
+    isph_pressure_acceleration(&s->pairs, p, held_walls(s, n), s->rho0, s->pressure_acc);
     for (int i = 0; i < n; i++) {
         drho_dt[i] = 0.0;
         const int fluid = (p->flags[i] & FLUID_PARTICLE_FLUID) != 0;
@@ -387,7 +392,7 @@ static void shift_particles(fluid_scheme *s, fluid_particles *p, double dt)
         const double *dr = &s->shift[i * FSI_DIM];
         double du[FSI_DIM];
         fsi_mat_vec(&f->grad_u[i * FSI_MAT_SIZE], dr, du);
-        /* a surface particle stays at p = 0 */
+        /* a surface particle keeps the pressure of its surface condition */
         if (f->where[i] != ISPH_SURFACE && f->where[i] != ISPH_SPLASH)
             p->pressure[i] += fsi_vec_dot(dr, &s->grad[i * FSI_DIM]);
         for (int d = 0; d < FSI_DIM; d++) {
@@ -461,7 +466,7 @@ int fluid_scheme_step(fluid_scheme *s, fluid_particles *p, double t, double dt,
                 s->v_start[k] = end;
             }
     const int loads = hooks->loads(hooks->owner, dt);
-    isph_pressure_loads(&s->pairs, p, s->ppe.held, s->last_load);
+    isph_pressure_loads(&s->pairs, p, held_walls(s, n), s->last_load);
     for (int i = 0; i < n; i++)
         if (p->flags[i] & FLUID_PARTICLE_MOVING_BOUNDARY)
             for (int d = 0; d < FSI_DIM; d++)
@@ -508,7 +513,7 @@ void fluid_scheme_boundary_loads(const fluid_scheme *s, const fluid_particles *p
 {
     /* the pressure terms of the last projection, the viscous terms of the state the
      * step started from: what the step moved the fluid with */
-    isph_pressure_loads(&s->pairs, p, s->ppe.held, force);
+    isph_pressure_loads(&s->pairs, p, held_walls(s, p->n), force);
     const int n = p->n < s->pairs.n ? p->n : s->pairs.n;
     for (int k = 0; k < n * FSI_DIM; k++)
         force[k] += s->viscous_loads[k];
