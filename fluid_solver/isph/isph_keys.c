@@ -54,12 +54,6 @@ static const fsi_key_spec keys[] = {
      "the surface condition p = 0 is applied there (p_a = -offset dx n . grad p), so that a "
      "surface particle carries the pressure of its depth; 0 puts p = 0 on the particle "
      "itself, as 003 and Skillen et al. 2013 do (docs/isph.md)."},
-    {"crowding_relaxation", FSI_KEY_REAL, "-", STR(ISPH_CROWDING), FSI_BOUND_MIN | FSI_BOUND_MAX,
-     0, 1, NULL,
-     "gamma of the term -gamma max(0, sum V W / its lattice value - 1) / dt^2 in the Poisson "
-     "equation's right-hand side: particles that crowd closer than the initial lattice are "
-     "pushed apart over about 1 / gamma steps (Hu & Adams 2007, Asai et al. 2012; not in "
-     "003, whose projection is divergence-free only, docs/isph.md); 0 turns it off."},
     {"wall_contact", FSI_KEY_REAL, "-", STR(ISPH_WALL_CONTACT), FSI_BOUND_MIN | FSI_BOUND_MAX, 0,
      1, NULL,
      "k of the soft contact k c0^2 (1 - r / dx) f(r / 0.75 h) / r between a fluid particle "

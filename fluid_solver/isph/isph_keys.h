@@ -19,8 +19,6 @@
 #define ISPH_SURFACE_UPPER 1.6
 /* Where the free surface is, outside a surface particle, in spacings (isph_ppe.h). */
 #define ISPH_SURFACE_OFFSET 0.5
-/* gamma of the crowding term of the Poisson equation (isph_ppe.h). */
-#define ISPH_CROWDING 0.0
 /* k of the soft contact with walls and solid (004 Eq. 21: 0.01). */
 #define ISPH_WALL_CONTACT 0.01
 /* Relative residual of the pressure solve and its iteration cap. */

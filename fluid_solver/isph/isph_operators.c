@@ -26,7 +26,6 @@ void isph_fields_free(isph_fields *f)
 {
     free(f->b);
     free(f->div_r);
-    free(f->crowding);
     free(f->alpha);
     free(f->where);
     free(f->normal);
@@ -46,7 +45,6 @@ int isph_fields_reserve(isph_fields *f, int n)
     int failed = 0;
     f->b = fsi_grow(f->b, cap * FSI_MAT_SIZE * sizeof(double), &failed);
     f->div_r = fsi_grow(f->div_r, cap * sizeof(double), &failed);
-    f->crowding = fsi_grow(f->crowding, cap * sizeof(double), &failed);
     f->alpha = fsi_grow(f->alpha, cap * sizeof(double), &failed);
     f->where = fsi_grow(f->where, cap, &failed);
     f->normal = fsi_grow(f->normal, vec, &failed);
@@ -72,49 +70,22 @@ static int slip_wall(const fluid_particles *p, const unsigned char *free_slip, i
     return free_slip && (p->flags[i] & FLUID_PARTICLE_WALL) && free_slip[i];
 }
 
-double isph_lattice_kernel_sum(const cubic_spline_kernel *k, double dx)
+void isph_geometry(const isph_pairs *q, const fluid_particles *p, isph_fields *f)
 {
-    const int m = (int)ceil(k->support / dx);
-    double sum = 0.0, f;
-    for (int i = -m; i <= m; i++)
-        for (int j = -m; j <= m; j++)
-#if FSI_DIM == 2
-        {
-            double w;
-            cubic_spline_eval2(k, (i * i + j * j) * dx * dx, &w, &f);
-            sum += w * dx * dx;
-        }
-#else
-            for (int l = -m; l <= m; l++) {
-                double w;
-                cubic_spline_eval2(k, (i * i + j * j + l * l) * dx * dx, &w, &f);
-                sum += w * dx * dx * dx;
-            }
-#endif
-    return sum;
-}
-
-void isph_geometry(const isph_pairs *q, const fluid_particles *p, double w_lattice,
-                   isph_fields *f)
-{
-    const double w0 = q->w0;
     const int n = p->n;
 #pragma omp parallel for schedule(static) if (n >= FLUID_PARALLEL_MIN_PARTICLES)
     for (int i = 0; i < n; i++) {
         double *b = &f->b[i * FSI_MAT_SIZE];
         fsi_mat_identity(b);
         f->div_r[i] = 0.0;
-        f->crowding[i] = 0.0;
         if (!is_fluid(p, i))
             continue;
         /* sum_b V_b (x_b - x_a) (x) grad_a W_ab = -sum_b V_b F x_ab (x) x_ab */
-        double m[FSI_MAT_SIZE] = {0}, sum_w = p->volume[i] * w0;
+        double m[FSI_MAT_SIZE] = {0};
         for (int64_t e = q->start[i]; e < q->start[i + 1]; e++) {
             const double *x = &q->xij[e * FSI_DIM];
             fsi_mat_add_outer(m, -p->volume[q->j[e]] * q->f[e], x, x);
-            sum_w += p->volume[q->j[e]] * q->w[e];
         }
-        f->crowding[i] = sum_w / w_lattice - 1.0;
         f->div_r[i] = fsi_mat_trace(m);
         double inv[FSI_MAT_SIZE];
         if (f->correct && fsi_mat_inverse(m, inv, ISPH_B_MAX_CONDITION) == 0)

@@ -33,8 +33,6 @@ typedef struct {
     int capacity;
     double *b;              /* B_a, FSI_DIM^2 per particle (fluid) */
     double *div_r;          /* div r (fluid) */
-    double *crowding;       /* sum_b V_b W_ab + V_a W(0) over its value on the initial
-                             * lattice, minus 1 (fluid): > 0 where particles crowd */
     double *alpha;          /* Skillen's coefficient, 003 Eq. 17 (fluid) */
     uint8_t *where;         /* ISPH_* (fluid) */
     double *normal;         /* unit outward normal of a surface or near-surface particle */
@@ -52,14 +50,8 @@ void isph_fields_free(isph_fields *f);
 /* Room for n particles. 0, or -1 when memory runs out. */
 int isph_fields_reserve(isph_fields *f, int n);
 
-/* B_a, div r and crowding of every fluid particle; w_lattice is sum V W over the
- * initial lattice (isph_lattice_kernel_sum). */
-void isph_geometry(const isph_pairs *q, const fluid_particles *p, double w_lattice,
-                   isph_fields *f);
-
-/* sum_b dx^DIM W(|x_b|) over a square lattice of spacing dx around a point of it, itself
- * included: the kernel sum of a particle inside a uniform fluid. */
-double isph_lattice_kernel_sum(const cubic_spline_kernel *k, double dx);
+/* B_a and div r of every fluid particle. */
+void isph_geometry(const isph_pairs *q, const fluid_particles *p, isph_fields *f);
 
 /* Classes, Skillen's alpha and normals of every fluid particle from div r (lower,
  * upper: 003 Eq. 17's 1.4 and 1.6 in 2D), h the smoothing length. The normal leaves out

@@ -79,8 +79,6 @@ int isph_pairs_build(isph_pairs *q, const fluid_verlet *list, const cubic_spline
             m++;
         }
     }
-    double f0;
-    cubic_spline_eval2(k, 0.0, &q->w0, &f0);
     q->n = n;
     return 0;
 }

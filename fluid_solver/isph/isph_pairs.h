@@ -18,7 +18,6 @@ typedef struct {
     double *xij;            /* x_j - x_i (nearest periodic image), FSI_DIM per pair [m] */
     double *w;              /* W(|x_ij|) [1/m^DIM] */
     double *f;              /* F = (dW/dr) / r <= 0: grad_i W_ij = -F x_ij [1/m^(DIM+2)] */
-    double w0;              /* W(0), a particle's own weight */
     int capacity;
     int64_t pair_capacity;
 } isph_pairs;

@@ -20,14 +20,13 @@
 #define ISPH_SURFACE_MIN_DIAGONAL 0.25
 
 void isph_ppe_init(isph_ppe *s, fsi_krylov_settings settings, fsi_precond_kind preconditioner,
-                   int gmres, double surface_offset, double crowding_relaxation)
+                   int gmres, double surface_offset)
 {
     memset(s, 0, sizeof *s);
     s->settings = settings;
     s->preconditioner = preconditioner;
     s->gmres = gmres;
     s->surface_offset = surface_offset;
-    s->crowding = crowding_relaxation;
     fsi_csr_init(&s->a);
     fsi_precond_init(&s->m);
 }
@@ -42,7 +41,7 @@ void isph_ppe_free(isph_ppe *s)
     free(s->cols);
     free(s->vals);
     free(s->held);
-    isph_ppe_init(s, s->settings, s->preconditioner, s->gmres, s->surface_offset, s->crowding);
+    isph_ppe_init(s, s->settings, s->preconditioner, s->gmres, s->surface_offset);
 }
 
 static int reserve(isph_ppe *s, const isph_pairs *q, int n)
@@ -79,15 +78,22 @@ static int reserve(isph_ppe *s, const isph_pairs *q, int n)
     return 0;
 }
 
+/* The mass rho_S V_S of solid particle j when its inertia is in the equation
+ * (last_load set), else 0. */
+static double solid_mass(const isph_ppe *s, const fluid_particles *p, int j)
+{
+    if (!s->last_load || !(p->flags[j] & FLUID_PARTICLE_MOVING_BOUNDARY))
+        return 0.0;
+    return p->boundary_density[j] * p->volume[j];
+}
+
 /* Component d of the acceleration of wall or solid particle j without the fluid's last
  * load when its inertia is in the equation (boundary_row), as received otherwise. */
 static double own_acceleration(const isph_ppe *s, const fluid_particles *p, int j, int d)
 {
     const double a = p->boundary_acceleration[j * FSI_DIM + d];
-    const double mass = s->inertia.mass ? s->inertia.mass[j] : 0.0;
-    if (!(mass > 0.0) || !(p->flags[j] & FLUID_PARTICLE_MOVING_BOUNDARY))
-        return a;
-    return a - s->inertia.last_load[j * FSI_DIM + d] / mass;
+    const double mass = solid_mass(s, p, j);
+    return mass > 0.0 ? a - s->last_load[j * FSI_DIM + d] / mass : a;
 }
 
 static void zero_row(isph_ppe *s, const isph_pairs *q, int i)
@@ -150,8 +156,7 @@ static void fluid_row(isph_ppe *s, const isph_pairs *q, const fluid_particles *p
     }
     const double scale = 1.0 / diag;
     s->diag[i] = 1.0;
-    const double crowding = f->crowding[i] > 0.0 ? f->crowding[i] : 0.0;
-    s->rhs[i] = alpha * scale * (div / dt - s->crowding * crowding / (dt * dt));
+    s->rhs[i] = alpha * scale * div / dt;
     for (int64_t e = q->start[i]; e < q->start[i + 1]; e++)
         s->coef[e] *= alpha * scale;
     if (alpha >= 1.0)
@@ -196,8 +201,8 @@ static void boundary_row(isph_ppe *s, const isph_pairs *q, const fluid_particles
     s->diag[i] = 1.0;
     s->rhs[i] = 0.0;
     const double sw = f->sum_w[i];
-    const double mass = s->inertia.mass ? s->inertia.mass[i] : 0.0;
-    const int implicit = mass > 0.0 && (p->flags[i] & FLUID_PARTICLE_MOVING_BOUNDARY);
+    const double mass = solid_mass(s, p, i);
+    const int implicit = mass > 0.0;
     double g_rel[FSI_DIM], lever[FSI_DIM] = {0};
     for (int d = 0; d < FSI_DIM; d++)
         g_rel[d] = gravity[d] - own_acceleration(s, p, i, d);

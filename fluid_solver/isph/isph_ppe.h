@@ -4,11 +4,7 @@
  *   - a fluid particle a (003 Eqs. 15-16, Skillen's blending alpha_a of Eq. 17):
  *       A_aa p_a + alpha_a sum_b A_ab p_b = alpha_a (1 / dt) sum_b V_b (u*_b - u*_a) . B_a grad_a W_ab,
  *       A_ab = -c_ab, A_aa = sum_b c_ab, c_ab = (2 V_b / rho0) x_ab . (B_a grad_a W_ab) / |x_ab|^2,
- *     optionally with - gamma max(0, crowding_a) / dt^2 on the right-hand side (Hu &
- *     Adams 2007's density invariance with Asai et al. 2012's relaxation, for
- *     compression only: a particle near the surface has a short kernel sum, not a
- *     stretched neighbourhood; gamma = crowding_relaxation, 0 by default: on F0 and F1
- *     it did not help); blended, for alpha_a < 1, with the free-surface condition applied where the
+ *     blended, for alpha_a < 1, with the free-surface condition applied where the
  *     surface is, half a spacing (surface_offset) outside the particle along its
  *     normal n: p_a + surface_offset n . <grad p>_a = 0 (003 Eq. 2's gradient). A surface
  *     particle then carries the pressure of its depth below the surface, about
@@ -25,7 +21,7 @@
  *     by the pressure gradient of that condition, rho0 (g - a_S), leaves the wall's own
  *     v_S (a fluid at rest on a floor sees no divergence, and the pressure is exactly
  *     hydrostatic). A solid particle of known mass has its acceleration taken
- *     implicitly (isph_inertia below, boundary_row in isph_ppe.c).
+ *     implicitly (last_load below, boundary_row in isph_ppe.c).
  *     A wall or solid particle whose pressure comes out negative is held at p = 0 and
  *     the equation solved again (at most ISPH_WALL_PASSES times; the set carries over to
  *     the next projection): a wall pushes, never pulls;
@@ -43,21 +39,15 @@
 #include "isph_pairs.h"
 #include "krylov.h"
 
-/* The solid's inertia in the Poisson equation (isph_ppe.c, boundary_row): per particle
- * its mass (0: none, the received acceleration is taken as it is) and the pressure
- * load of the last step on it. Arrays of the scheme's, NULL for none. */
-typedef struct {
-    const double *mass;
-    const double *last_load;
-} isph_inertia;
-
 typedef struct {
     fsi_krylov_settings settings;
-    isph_inertia inertia;
+    /* the solid's inertia in the equation (boundary_row in isph_ppe.c): the pressure
+     * load of the last step on every particle, the scheme's; NULL: the solid's
+     * received acceleration is taken as it is */
+    const double *last_load;
     fsi_precond_kind preconditioner;
     int gmres;                  /* 1: GMRES(30), 0: BiCGSTAB */
     double surface_offset;      /* where the free surface is, outside a surface particle [m] */
-    double crowding;            /* gamma of the crowding term (below) */
     fsi_csr a;
     fsi_precond m;
     double *rhs, *coef, *diag;  /* per row, per pair, per row */
@@ -75,7 +65,7 @@ typedef struct {
 } isph_ppe;
 
 void isph_ppe_init(isph_ppe *s, fsi_krylov_settings settings, fsi_precond_kind preconditioner,
-                   int gmres, double surface_offset, double crowding_relaxation);
+                   int gmres, double surface_offset);
 void isph_ppe_free(isph_ppe *s);
 
 /* Assembles and solves for p->pressure of every particle, u_star the fluid's predicted

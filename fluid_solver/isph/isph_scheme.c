@@ -20,6 +20,7 @@
 
 #include "cubic_spline.h"
 #include "fluid_parallel.h"
+#include "fluid_phases.h"
 #include "fluid_scheme.h"
 #include "fluid_step.h"
 #include "grow.h"
@@ -46,7 +47,6 @@ struct fluid_scheme {
     cubic_spline_kernel kernel;
     double rho0, nu0, gravity[FSI_DIM];
     double courant, smagorinsky, surface_lower, surface_upper;
-    double w_lattice;           /* the kernel sum inside a uniform fluid */
     double spacing;             /* dx [m] */
     const unsigned char *free_slip;
     fluid_verlet list;
@@ -61,7 +61,7 @@ struct fluid_scheme {
     double *pressure_acc;       /* a_p of the last rates */
     double *viscous_loads;      /* the reaction of a_v's pair terms on the solid */
     double *u_star, *x_start, *v_start, *shift, *grad;
-    double *solid_mass, *last_load; /* the solid's inertia in the Poisson equation */
+    double *last_load;          /* the pressure load of the last step on the solid */
     int explicit_solid;         /* 1: the solid's received acceleration as it is */
     double *x_fresh, *p_fresh;  /* positions and pressures of the last solve or step */
     int n_fresh;                /* their count; 0: none */
@@ -69,23 +69,12 @@ struct fluid_scheme {
     double dt_project, dt_last, t_project;
     long steps;
     fsi_krylov_result last;
-    fsi_timers *timers;
-    int phase[N_PHASES];
+    fluid_phases phases;
 };
 
 void fluid_scheme_use_timers(fluid_scheme *s, fsi_timers *t)
 {
-    s->timers = t;
-    for (int k = 0; t && k < N_PHASES; k++)
-        s->phase[k] = fsi_timer_index(t, phase_name[k]);
-}
-
-static void phase(fluid_scheme *s, int which, int start)
-{
-    if (s->timers && start)
-        fsi_timer_start(s->timers, s->phase[which]);
-    else if (s->timers)
-        fsi_timer_stop(s->timers, s->phase[which]);
+    fluid_phases_use(&s->phases, t, phase_name, N_PHASES);
 }
 
 static int reserve(fluid_scheme *s, int n)
@@ -102,7 +91,6 @@ static int reserve(fluid_scheme *s, int n)
     for (size_t k = 0; k < sizeof arrays / sizeof arrays[0]; k++)
         *arrays[k] = fsi_grow(*arrays[k], vec, &failed);
     s->p_fresh = fsi_grow(s->p_fresh, cap * sizeof(double), &failed);
-    s->solid_mass = fsi_grow(s->solid_mass, cap * sizeof(double), &failed);
     if (!failed && s->last_load)
         memset(s->last_load + (size_t)s->capacity * FSI_DIM, 0,
                (cap - (size_t)s->capacity) * FSI_DIM * sizeof(double));
@@ -129,7 +117,6 @@ fluid_scheme *fluid_scheme_create(const fsi_case *c, const char *role,
         free(s);
         return NULL;
     }
-    s->w_lattice = isph_lattice_kernel_sum(&s->kernel, p->spacing);
     s->spacing = p->spacing;
     s->rho0 = props->density;
     s->explicit_solid = fsi_case_choice_is(c, own, "solid_inertia", "explicit");
@@ -157,8 +144,7 @@ fluid_scheme *fluid_scheme_create(const fsi_case *c, const char *role,
                                                                     : FSI_PRECOND_ILU0,
                   fsi_case_choice_is(c, own, "ppe_solver", "gmres"),
                   fsi_case_get_real(c, own, "free_surface_offset", ISPH_SURFACE_OFFSET) *
-                      p->spacing,
-                  fsi_case_get_real(c, own, "crowding_relaxation", ISPH_CROWDING));
+                      p->spacing);
     s->contact = (isph_contact){
         fsi_case_get_real(c, own, "wall_contact", ISPH_WALL_CONTACT) * props->sound_speed *
             props->sound_speed,
@@ -194,7 +180,7 @@ void fluid_scheme_free(fluid_scheme *s)
     isph_ppe_free(&s->ppe);
     double *arrays[] = {s->viscous, s->pressure_acc, s->viscous_loads, s->u_star, s->x_start,
                         s->v_start, s->shift, s->grad, s->x_fresh, s->p_fresh,
-                        s->solid_mass, s->last_load};
+                        s->last_load};
     for (size_t k = 0; k < sizeof arrays / sizeof arrays[0]; k++)
         free(arrays[k]);
     free(s);
@@ -275,19 +261,13 @@ static void remember_state(fluid_scheme *s, const fluid_particles *p)
 static int solve(fluid_scheme *s, fluid_particles *p, const double *u_star, double dt, char *msg,
                  size_t msg_size)
 {
-    s->ppe.inertia = (isph_inertia){NULL, NULL};
-    if (!s->explicit_solid) {
-        /* m_S = rho_S V_S as the solid sent them (protocol version 3) */
-        for (int i = 0; i < p->n; i++)
-            s->solid_mass[i] = (p->flags[i] & FLUID_PARTICLE_MOVING_BOUNDARY)
-                                   ? p->boundary_density[i] * p->volume[i]
-                                   : 0.0;
-        s->ppe.inertia = (isph_inertia){s->solid_mass, s->last_load};
-    }
-    phase(s, PHASE_PPE, 1);
+    /* the solid's inertia in the equation: m_S = rho_S V_S as the solid sent them
+     * (protocol version 3) */
+    s->ppe.last_load = s->explicit_solid ? NULL : s->last_load;
+    fluid_phase_start(&s->phases, PHASE_PPE);
     const int rc = isph_ppe_solve(&s->ppe, &s->pairs, p, &s->fields, u_star, dt, s->rho0,
                                   s->gravity, &s->last, msg, msg_size);
-    phase(s, PHASE_PPE, 0);
+    fluid_phase_stop(&s->phases, PHASE_PPE);
     if (rc == 0) {
         remember_state(s, p);
         return 0;
@@ -313,29 +293,29 @@ int fluid_scheme_rates(fluid_scheme *s, fluid_particles *p, double *drho_dt, dou
             p->density[i] = s->rho0;
             p->volume[i] = p->mass[i] / s->rho0;
         }
-    phase(s, PHASE_SEARCH, 1);
+    fluid_phase_start(&s->phases, PHASE_SEARCH);
     int rc = fluid_verlet_update(&s->list, p, s->kernel.support, s->skin);
     if (rc >= 0)
         rc = isph_pairs_build(&s->pairs, &s->list, &s->kernel, p);
-    phase(s, PHASE_SEARCH, 0);
+    fluid_phase_stop(&s->phases, PHASE_SEARCH);
     if (rc < 0) {
         snprintf(msg, msg_size, "cannot build the neighbour lists of %d particles (a position "
                  "is not finite, or memory ran out)", n);
         return -1;
     }
-    phase(s, PHASE_OPERATORS, 1);
+    fluid_phase_start(&s->phases, PHASE_OPERATORS);
     isph_fields *f = &s->fields;
-    isph_geometry(&s->pairs, p, s->w_lattice, f);
+    isph_geometry(&s->pairs, p, f);
     isph_free_surface(&s->pairs, p, held_walls(s, n), s->surface_lower, s->surface_upper, s->kernel.h, f);
     isph_wall_velocity(&s->pairs, p, s->free_slip, f);
     isph_velocity_gradient(&s->pairs, p, s->nu0, s->smagorinsky, s->kernel.h, f);
-    phase(s, PHASE_OPERATORS, 0);
-    phase(s, PHASE_FORCES, 1);
+    fluid_phase_stop(&s->phases, PHASE_OPERATORS);
+    fluid_phase_start(&s->phases, PHASE_FORCES);
     if (!s->projecting) {
         isph_viscous_acceleration(&s->pairs, p, s->free_slip, f, &s->contact, s->viscous);
         isph_viscous_loads(&s->pairs, p, f, &s->contact, s->rho0, s->viscous_loads);
     }
-    phase(s, PHASE_FORCES, 0);
+    fluid_phase_stop(&s->phases, PHASE_FORCES);
     if (s->projecting) {
         if (solve(s, p, s->u_star, s->dt_project, msg, msg_size) != 0)
             return -1;
@@ -354,7 +334,7 @@ int fluid_scheme_rates(fluid_scheme *s, fluid_particles *p, double *drho_dt, dou
         if (solve(s, p, s->u_star, dt, msg, msg_size) != 0)
             return -1;
     }
-    phase(s, PHASE_FORCES, 1);
+    fluid_phase_start(&s->phases, PHASE_FORCES);
     memset(s->pressure_acc, 0, (size_t)n * FSI_DIM * sizeof *s->pressure_acc);
     isph_pressure_acceleration(&s->pairs, p, held_walls(s, n), s->rho0, s->pressure_acc);
     for (int i = 0; i < n; i++) {
@@ -365,13 +345,8 @@ int fluid_scheme_rates(fluid_scheme *s, fluid_particles *p, double *drho_dt, dou
             dv_dt[k] = fluid ? s->gravity[d] + s->viscous[k] + s->pressure_acc[k] : 0.0;
         }
     }
-    phase(s, PHASE_FORCES, 0);
+    fluid_phase_stop(&s->phases, PHASE_FORCES);
     return 0;
-}
-
-static double largest_fluid_speed(const fluid_particles *p)
-{
-    return fluid_largest_speed(p);
 }
 
 /* Shifting (003 Eqs. 20-32): u and p follow by Taylor's first order with the corrected
@@ -380,7 +355,7 @@ static void shift_particles(fluid_scheme *s, fluid_particles *p, double dt)
 {
     const int n = p->n;
     isph_fields *f = &s->fields;
-    const double zeta = largest_fluid_speed(p) * dt;
+    const double zeta = fluid_largest_speed(p) * dt;
     isph_shifting_compute(&s->shifting, &s->pairs, p, f, zeta, s->shift);
     isph_scalar_gradient(&s->pairs, p, f, p->pressure, s->grad);
     isph_wall_velocity(&s->pairs, p, s->free_slip, f);
@@ -474,10 +449,10 @@ int fluid_scheme_step(fluid_scheme *s, fluid_particles *p, double t, double dt,
     if (loads != 0)
         return -1;
     /* 4. shifting */
-    phase(s, PHASE_SHIFTING, 1);
+    fluid_phase_start(&s->phases, PHASE_SHIFTING);
     if (s->shifting.coefficient > 0.0)
         shift_particles(s, p, dt);
-    phase(s, PHASE_SHIFTING, 0);
+    fluid_phase_stop(&s->phases, PHASE_SHIFTING);
     remember_state(s, p);
     s->dt_last = dt;
     s->steps++;
@@ -499,7 +474,7 @@ void fluid_scheme_after_step(fluid_scheme *s, fluid_particles *p, long count)
 
 double fluid_scheme_stable_dt(const fluid_scheme *s, const fluid_particles *p, double amax)
 {
-    return stable_step(s, largest_fluid_speed(p), amax);
+    return stable_step(s, fluid_largest_speed(p), amax);
 }
 
 void fluid_scheme_pressure_gradient(const fluid_scheme *s, const fluid_particles *p,

@@ -13,6 +13,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "fluid_phases.h"
 #include "fluid_scheme.h"
 #include "fluid_step.h"
 #include "grow.h"
@@ -52,33 +53,18 @@ struct fluid_scheme {
     fluid_wc_integrator integrator; /* 000 Eq. 56 */
     int verlet;                 /* 1: the Verlet integrator instead */
     fluid_wc_verlet verlet_integrator;
-    fsi_timers *timers;         /* NULL: not timed */
-    int phase[N_PHASES];        /* their indices in timers */
+    fluid_phases phases;
 };
 
 void fluid_scheme_use_timers(fluid_scheme *s, fsi_timers *t)
 {
-    s->timers = t;
-    for (int k = 0; t && k < N_PHASES; k++)
-        s->phase[k] = fsi_timer_index(t, phase_name[k]);
+    fluid_phases_use(&s->phases, t, phase_name, N_PHASES);
 }
 
 void fluid_scheme_particles_reordered(fluid_scheme *s, const int *sorted, int n, void *scratch)
 {
     fluid_verlet_invalidate(&s->list);
     fluid_wc_verlet_permute(&s->verlet_integrator, sorted, n, scratch);
-}
-
-static void phase_start(fluid_scheme *s, int phase)
-{
-    if (s->timers)
-        fsi_timer_start(s->timers, s->phase[phase]);
-}
-
-static void phase_stop(fluid_scheme *s, int phase)
-{
-    if (s->timers)
-        fsi_timer_stop(s->timers, s->phase[phase]);
 }
 
 /* Room for n particles in the per-particle scratch: the moving boundary set changes
@@ -279,27 +265,27 @@ int fluid_scheme_rates(fluid_scheme *s, fluid_particles *p, double *drho_dt, dou
         snprintf(msg, msg_size, "out of memory for the ULPH scheme of %d particles", p->n);
         return -1;
     }
-    phase_start(s, PHASE_STATE);
+    fluid_phase_start(&s->phases, PHASE_STATE);
     tait_eos_update_fluid(&s->eos, p, s->tension);
-    phase_stop(s, PHASE_STATE);
-    phase_start(s, PHASE_SEARCH);
+    fluid_phase_stop(&s->phases, PHASE_STATE);
+    fluid_phase_start(&s->phases, PHASE_SEARCH);
     const int built = fluid_verlet_update(&s->list, p, s->kernel.support, s->skin);
-    phase_stop(s, PHASE_SEARCH);
-    phase_start(s, PHASE_OPERATORS);
+    fluid_phase_stop(&s->phases, PHASE_SEARCH);
+    fluid_phase_start(&s->phases, PHASE_OPERATORS);
     const int rc = built < 0 ? -1
                              : ulph_operators_update_list(&s->ops, &s->kernel, &s->list, p, built);
-    phase_stop(s, PHASE_OPERATORS);
+    fluid_phase_stop(&s->phases, PHASE_OPERATORS);
     if (rc != 0) {
         snprintf(msg, msg_size, "cannot build the neighbour lists of %d particles (a "
                  "position is not finite, or memory ran out)", p->n);
         return -1;
     }
-    phase_start(s, PHASE_WALLS);
+    fluid_phase_start(&s->phases, PHASE_WALLS);
     ghost_walls_update(&s->ops.rows, &s->ops.periodic, &s->eos, s->momentum.gravity,
                        s->free_slip, p, s->velocity_for_viscosity);
-    phase_stop(s, PHASE_WALLS);
+    fluid_phase_stop(&s->phases, PHASE_WALLS);
     if (s->filter_due) {
-        phase_start(s, PHASE_FILTER);
+        fluid_phase_start(&s->phases, PHASE_FILTER);
         density_filter(s, p);
         tait_eos_update_fluid(&s->eos, p, s->tension);
         ghost_walls_update(&s->ops.rows, &s->ops.periodic, &s->eos, s->momentum.gravity,
@@ -308,12 +294,12 @@ int fluid_scheme_rates(fluid_scheme *s, fluid_particles *p, double *drho_dt, dou
         /* The filtered rho^n replaces the step's start; Verlet's leapfrog from rho^{n-1}
          * would bring back the noise it removed, so the next step is the Euler one. */
         fluid_wc_verlet_restart(&s->verlet_integrator);
-        phase_stop(s, PHASE_FILTER);
+        fluid_phase_stop(&s->phases, PHASE_FILTER);
     }
-    phase_start(s, PHASE_MOMENTUM);
+    fluid_phase_start(&s->phases, PHASE_MOMENTUM);
     ulph_momentum_rates(&s->ops, &s->momentum, p, s->velocity_for_viscosity, &s->scratch,
                         drho_dt, dv_dt);
-    phase_stop(s, PHASE_MOMENTUM);
+    fluid_phase_stop(&s->phases, PHASE_MOMENTUM);
     return 0;
 }
 

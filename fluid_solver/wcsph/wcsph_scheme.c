@@ -15,6 +15,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "fluid_phases.h"
 #include "fluid_scheme.h"
 #include "fluid_parallel.h"
 #include "fluid_step.h"
@@ -48,23 +49,12 @@ struct fluid_scheme {
     int verlet;                 /* 1: the Verlet integrator */
     fluid_wc_integrator predictor_corrector;
     fluid_wc_verlet verlet_integrator;
-    fsi_timers *timers;
-    int phase[N_PHASES];
+    fluid_phases phases;
 };
 
 void fluid_scheme_use_timers(fluid_scheme *s, fsi_timers *t)
 {
-    s->timers = t;
-    for (int k = 0; t && k < N_PHASES; k++)
-        s->phase[k] = fsi_timer_index(t, phase_name[k]);
-}
-
-static void phase(fluid_scheme *s, int which, int start)
-{
-    if (s->timers && start)
-        fsi_timer_start(s->timers, s->phase[which]);
-    else if (s->timers)
-        fsi_timer_stop(s->timers, s->phase[which]);
+    fluid_phases_use(&s->phases, t, phase_name, N_PHASES);
 }
 
 void fluid_scheme_particles_reordered(fluid_scheme *s, const int *sorted, int n, void *scratch)
@@ -192,35 +182,35 @@ int fluid_scheme_rates(fluid_scheme *s, fluid_particles *p, double *drho_dt, dou
         snprintf(msg, msg_size, "out of memory for the WCSPH scheme of %d particles", p->n);
         return -1;
     }
-    phase(s, PHASE_STATE, 1);
+    fluid_phase_start(&s->phases, PHASE_STATE);
     /* 004 Eq. 4 both ways: a weakly compressible liquid under tension near a free
      * surface. */
     tait_eos_update_fluid(&s->eos, p, 1);
-    phase(s, PHASE_STATE, 0);
-    phase(s, PHASE_SEARCH, 1);
+    fluid_phase_stop(&s->phases, PHASE_STATE);
+    fluid_phase_start(&s->phases, PHASE_SEARCH);
     const int built = fluid_verlet_update(&s->list, p, s->kernel.support, s->skin);
-    phase(s, PHASE_SEARCH, 0);
-    phase(s, PHASE_ROWS, 1);
+    fluid_phase_stop(&s->phases, PHASE_SEARCH);
+    fluid_phase_start(&s->phases, PHASE_ROWS);
     const int rc = built < 0 ? -1 : built > 0 ? fluid_rows_build(&s->rows, &s->list, p, 0) : 0;
     if (rc != 0) {
-        phase(s, PHASE_ROWS, 0);
+        fluid_phase_stop(&s->phases, PHASE_ROWS);
         snprintf(msg, msg_size, "cannot build the neighbour lists of %d particles (a "
                  "position is not finite, or memory ran out)", p->n);
         return -1;
     }
     wcsph_pairs(&s->rows, &s->kernel,
                 fsi_periodic_any(&s->list.periodic) ? &s->list.periodic : NULL, p);
-    phase(s, PHASE_ROWS, 0);
+    fluid_phase_stop(&s->phases, PHASE_ROWS);
     const wcsph_neighbours nb = neighbours(s);
-    phase(s, PHASE_WALLS, 1);
+    fluid_phase_start(&s->phases, PHASE_WALLS);
     wcsph_walls(&nb, &s->eos, s->prm.gravity, s->free_slip, p, s->velocity_for_viscosity);
-    phase(s, PHASE_WALLS, 0);
-    phase(s, PHASE_GRADIENTS, 1);
+    fluid_phase_stop(&s->phases, PHASE_WALLS);
+    fluid_phase_start(&s->phases, PHASE_GRADIENTS);
     wcsph_gradients(&nb, &s->prm, p, s->velocity_for_viscosity, &s->scratch);
-    phase(s, PHASE_GRADIENTS, 0);
-    phase(s, PHASE_MOMENTUM, 1);
+    fluid_phase_stop(&s->phases, PHASE_GRADIENTS);
+    fluid_phase_start(&s->phases, PHASE_MOMENTUM);
     wcsph_rates(&nb, &s->prm, p, s->velocity_for_viscosity, &s->scratch, drho_dt, dv_dt);
-    phase(s, PHASE_MOMENTUM, 0);
+    fluid_phase_stop(&s->phases, PHASE_MOMENTUM);
     return 0;
 }
 

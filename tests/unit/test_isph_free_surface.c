@@ -56,7 +56,7 @@ int main(void)
     CHECK(fluid_verlet_update(&list, &p, kernel.support, 0.0) >= 0, "neighbour lists");
     CHECK(isph_pairs_build(&q, &list, &kernel, &p) == 0, "pairs");
     CHECK(isph_fields_reserve(&f, p.n) == 0, "fields");
-    isph_geometry(&q, &p, isph_lattice_kernel_sum(&kernel, DX), &f);
+    isph_geometry(&q, &p, &f);
     isph_free_surface(&q, &p, NULL, 1.4, 1.6, kernel.h, &f);
 
     /* the lattice sum, apart from the scheme's pairs */
