@@ -53,7 +53,9 @@ struct fsi_participant {
     int n_peers;
 
     /* current window */
-    int window;
+    int window, iteration;
+    int implicit;           /* [run] scheme = implicit */
+    int window_complete;    /* after fsi_advance: the window is accepted */
     double t, dt;
     int flags, frame;
     int finished;
@@ -438,6 +440,33 @@ int fsi_output_frame(const fsi_participant *p)
     return p->frame;
 }
 
+int fsi_iteration(const fsi_participant *p)
+{
+    return p->iteration;
+}
+
+int fsi_requires_writing_checkpoint(const fsi_participant *p)
+{
+    return p->implicit && p->iteration == 0;
+}
+
+int fsi_requires_reading_checkpoint(const fsi_participant *p)
+{
+    return p->implicit && p->iteration > 0;
+}
+
+int fsi_window_complete(const fsi_participant *p)
+{
+    return p->window_complete;
+}
+
+int fsi_write_window_end(fsi_participant *p, const fsi_interface *end)
+{
+    (void)p;
+    (void)end;
+    return 0;
+}
+
 int fsi_coupled(const fsi_participant *p)
 {
     return peer_with_role(p, other_role(p)) != NULL;
@@ -590,6 +619,7 @@ int fsi_advance(fsi_participant *p, double dt_next_max)
 {
     test_stall_switch(p);
     test_slow_switch(p);
+    p->window_complete = 1;
     return send_done(p, FSI_STATUS_OK, dt_next_max, 0, NULL, NULL);
 }
 

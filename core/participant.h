@@ -39,7 +39,9 @@ typedef struct fsi_participant fsi_participant;
  * fsi_write_interface refuses a state of n > 0 that lacks one); the fluid writes id,
  * pressure and force (n * FSI_DIM) for the particles it received, and its acoustic
  * impedance rho0 c0 (one number: what the solid needs to answer the fluid within a
- * window, docs/coupling.md). Initialise with designated initialisers: fields may be
+ * window, docs/coupling.md). What the solid reads back also holds, in velocity, the
+ * window-mean velocity the fluid moved each particle with (the velocity it sent, or
+ * in an implicit run the iteration's motion), the reference of the impedance term. Initialise with designated initialisers: fields may be
  * added. */
 typedef struct {
     int n;
@@ -87,6 +89,38 @@ int fsi_write_interface(fsi_participant *p, const fsi_interface *data);
 /* Blocks until the other side's data for the current window has arrived and points
  * 'data' at it (arrays owned by p). Uncoupled: n = 0. */
 int fsi_read_interface(fsi_participant *p, fsi_interface *data);
+
+/* Implicit coupling ([run] scheme = implicit, docs/coupling.md): the coupler repeats
+ * a window until the interface converges. A participant saves its state at the start
+ * of a window's first iteration and restores it whenever the window is repeated,
+ * the way preCICE's requiresWritingCheckpoint / requiresReadingCheckpoint work:
+ *
+ *     while (fsi_ongoing(p)) {
+ *         if (fsi_requires_reading_checkpoint(p)) restore(&saved);
+ *         if (fsi_requires_writing_checkpoint(p)) save(&saved);
+ *         ... exchange and advance as in an explicit run ...
+ *         fsi_write_window_end(p, &end);       // solid: its positions at t_k + dt
+ *         fsi_advance(p, dt_next_max);         // implicit: waits for the verdict
+ *         if (fsi_window_complete(p)) ... output ...
+ *     }
+ *
+ * In an explicit run the two checkpoint calls are always 0, fsi_write_window_end does
+ * nothing and fsi_window_complete is always 1, so one loop serves both. */
+int fsi_iteration(const fsi_participant *p);      /* sub-iteration of the window, 0.. */
+/* True at the first iteration of each window of an implicit run: save the state now,
+ * before the exchange. */
+int fsi_requires_writing_checkpoint(const fsi_participant *p);
+/* True when the coupler repeats the window: restore the state saved at its start
+ * before anything else. */
+int fsi_requires_reading_checkpoint(const fsi_participant *p);
+/* Solid: the positions at the window's end (t_k + dt) of the particles it wrote at
+ * the window's start, same ids in the same order (only n, id and position are read).
+ * The library compares them with the motion the fluid was given and chooses the
+ * motion of the next iteration (docs/coupling.md). 0, or -1 with a message. */
+int fsi_write_window_end(fsi_participant *p, const fsi_interface *end);
+/* After fsi_advance: 1 when the window is accepted and the run goes on from its end
+ * (write its output now), 0 when the coupler repeats it. */
+int fsi_window_complete(const fsi_participant *p);
 
 /* Value of a probe at the end of the current window. */
 void fsi_set_probe(fsi_participant *p, int index, double value);
