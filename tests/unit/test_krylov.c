@@ -35,6 +35,7 @@
 #include "unit_ppe_matrices.h"
 #include "unit_random.h"
 #include "unit_umfpack.h"
+#include "unit_vectors.h"
 
 static const double TOL = 1e-8;
 static const int GMRES_RESTART = 30;
@@ -49,30 +50,6 @@ static fsi_krylov_result solve(int solver, const fsi_csr *a, const fsi_precond *
 static const char *solver_name(int solver)
 {
     return solver == 0 ? "BiCGSTAB" : "GMRES(30)";
-}
-
-static double norm2(const double *u, int n)
-{
-    double s = 0.0;
-    for (int i = 0; i < n; i++)
-        s += u[i] * u[i];
-    return sqrt(s);
-}
-
-static double rel_diff(const double *u, const double *v, int n)
-{
-    double d = 0.0;
-    for (int i = 0; i < n; i++)
-        d += (u[i] - v[i]) * (u[i] - v[i]);
-    return sqrt(d) / norm2(v, n);
-}
-
-static int all_finite(const double *u, int n)
-{
-    for (int i = 0; i < n; i++)
-        if (!isfinite(u[i]))
-            return 0;
-    return 1;
 }
 
 /* y = A^T x (the tests' own loop, for the condition estimate). */
