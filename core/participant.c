@@ -18,8 +18,10 @@
 #include "fsi_solid_state_t.h"
 #include "fsi_step_t.h"
 #include "fsi_welcome_t.h"
+#include "grow.h"
 #include "log.h"
 #include "participant_env.h"
+#include "participant_implicit.h"
 #include "request_timer.h"
 
 #define MAX_PROBES 64
@@ -28,6 +30,7 @@
 /* The other side's interface data, tagged with the window it belongs to. */
 typedef struct {
     int window;      /* -1: empty */
+    int iteration;
     int n, capacity;
     int32_t *id;
     double *position, *velocity, *acceleration, *volume, *density, *pressure, *force;
@@ -60,12 +63,24 @@ struct fsi_participant {
     int flags, frame;
     int finished;
 
+    double dt_prev;         /* the length of the last accepted window */
+
     /* the next grant, possibly received before it is asked for */
     int next_window;     /* -1: none */
+    int next_iteration;
     double next_t, next_dt;
     int next_flags, next_frame;
 
     interface_slot other;
+
+    /* Solid: what it published this window, for the velocity handed back with the
+     * loads (the impedance's reference) and to match loads by id: ids in sent order,
+     * the reference velocity, and (id, index) sorted by id. */
+    int sent_n, sent_capacity;
+    int32_t *sent_id;
+    double *sent_velocity;
+    int32_t (*sent_order)[2];
+    implicit_solid *implicit_solid;     /* solid of an implicit run */
 
     double coupler_last_heard;
     int coupler_finished;
@@ -133,9 +148,16 @@ static int valid_interface_size(int n, int dim, int n_components)
     return n >= 0 && dim == FSI_DIM && n_components == n * FSI_DIM;
 }
 
+/* (w1, i1) comes after (w0, i0): a later window, or a later iteration of the same. */
+static int key_after(int w1, int i1, int w0, int i0)
+{
+    return w1 > w0 || (w1 == w0 && i1 > i0);
+}
+
 static void take_solid_state(fsi_participant *p, const fsi_solid_state_t *m)
 {
-    if (strcmp(p->role, "fluid") != 0 || m->header.window <= p->other.window)
+    if (strcmp(p->role, "fluid") != 0 ||
+        !key_after(m->header.window, m->header.iteration, p->other.window, p->other.iteration))
         return;
     if (!valid_interface_size(m->n, m->dim, m->n_components)) {
         fsi_warn("ignored solid_state of window %d: dim %d, n %d, %d components", m->header.window,
@@ -145,6 +167,7 @@ static void take_solid_state(fsi_participant *p, const fsi_solid_state_t *m)
     interface_slot *s = &p->other;
     grow_slot(s, m->n);
     s->window = m->header.window;
+    s->iteration = m->header.iteration;
     s->n = m->n;
     p->taken_new = fsi_bus_message_is_new(p->bus);
     memcpy(s->id, m->id, (size_t)m->n * sizeof(int32_t));
@@ -157,7 +180,8 @@ static void take_solid_state(fsi_participant *p, const fsi_solid_state_t *m)
 
 static void take_fluid_load(fsi_participant *p, const fsi_fluid_load_t *m)
 {
-    if (strcmp(p->role, "solid") != 0 || m->header.window <= p->other.window)
+    if (strcmp(p->role, "solid") != 0 ||
+        !key_after(m->header.window, m->header.iteration, p->other.window, p->other.iteration))
         return;
     if (!valid_interface_size(m->n, m->dim, m->n_components)) {
         fsi_warn("ignored fluid_load of window %d: dim %d, n %d, %d components", m->header.window,
@@ -167,6 +191,7 @@ static void take_fluid_load(fsi_participant *p, const fsi_fluid_load_t *m)
     interface_slot *s = &p->other;
     grow_slot(s, m->n);
     s->window = m->header.window;
+    s->iteration = m->header.iteration;
     s->n = m->n;
     p->taken_new = fsi_bus_message_is_new(p->bus);
     memcpy(s->id, m->id, (size_t)m->n * sizeof(int32_t));
@@ -191,10 +216,12 @@ static void take_welcome(fsi_participant *p, const fsi_welcome_t *m)
 
 static void take_step(fsi_participant *p, const fsi_step_t *m)
 {
-    int k = m->header.window;
-    if (k <= p->window || (p->next_window >= 0 && k <= p->next_window))
+    int k = m->header.window, i = m->header.iteration;
+    if (!key_after(k, i, p->window, p->iteration) ||
+        (p->next_window >= 0 && !key_after(k, i, p->next_window, p->next_iteration)))
         return;
     p->next_window = k;
+    p->next_iteration = i;
     p->next_t = m->t;
     p->next_dt = m->dt;
     p->next_flags = m->flags;
@@ -328,6 +355,22 @@ fsi_participant *fsi_open(const char *name, const char *role, const char *case_p
     p->window = -1;
     p->next_window = -1;
     p->other.window = -1;
+    p->implicit = fsi_case_choice_is(p->case_file, "run", "scheme", "implicit");
+    p->window_complete = 1;
+    if (p->implicit && strcmp(role, "solid") == 0) {
+        char msg[512];
+        p->implicit_solid = calloc(1, sizeof *p->implicit_solid);
+        if (!p->implicit_solid ||
+            implicit_solid_init(p->implicit_solid, p->case_file, msg, sizeof msg) != 0) {
+            fsi_error("implicit coupling: %s", p->implicit_solid ? msg : "out of memory");
+            if (p->implicit_solid)
+                implicit_solid_free(p->implicit_solid);
+            free(p->implicit_solid);
+            fsi_case_free(p->case_file);
+            free(p);
+            return NULL;
+        }
+    }
     p->t_wait = fsi_timer_index(&p->lib_timers, "coupling_wait");
     p->bus = fsi_bus_open(p->env.lcm_url, p->name, p->env.run_id, on_message, p);
     if (!p->bus) {
@@ -380,12 +423,18 @@ static int is_welcomed(const fsi_participant *p)
 
 static int has_next_step(const fsi_participant *p)
 {
-    return p->next_window == p->window + 1;
+    return p->next_window >= 0 &&
+           key_after(p->next_window, p->next_iteration, p->window, p->iteration);
 }
 
+/* The next grant is the next window, or in an implicit run possibly the same window
+ * again: ask for both. */
 static void request_step(fsi_participant *p)
 {
     fsi_bus_request_resend(p->bus, FSI_COUPLER_NAME, FSI_MSG_STEP, p->window + 1, 0);
+    if (p->implicit && p->window >= 0)
+        fsi_bus_request_resend(p->bus, FSI_COUPLER_NAME, FSI_MSG_STEP, p->window,
+                               p->iteration + 1);
 }
 
 int fsi_ongoing(fsi_participant *p)
@@ -404,7 +453,16 @@ int fsi_ongoing(fsi_participant *p)
         wait_for(p, is_welcomed, send_register, &p->welcome_wait);
     }
     wait_for(p, has_next_step, request_step, &p->step_wait);
+    if (p->next_window != p->window) {
+        /* The last window was accepted: the run goes on from its end. */
+        if (p->window >= 0) {
+            p->dt_prev = p->dt;
+            if (p->implicit_solid)
+                implicit_solid_accept(p->implicit_solid);
+        }
+    }
     p->window = p->next_window;
+    p->iteration = p->next_iteration;
     p->t = p->next_t;
     p->dt = p->next_dt;
     p->flags = p->next_flags;
@@ -462,14 +520,65 @@ int fsi_window_complete(const fsi_participant *p)
 
 int fsi_write_window_end(fsi_participant *p, const fsi_interface *end)
 {
-    (void)p;
-    (void)end;
-    return 0;
+    if (!p->implicit_solid || !fsi_coupled(p))
+        return 0;
+    char msg[512];
+    if (implicit_solid_window_end(p->implicit_solid, end, msg, sizeof msg) == 0)
+        return 0;
+    fsi_error("fsi_write_window_end: %s", msg);
+    return -1;
 }
 
 int fsi_coupled(const fsi_participant *p)
 {
     return peer_with_role(p, other_role(p)) != NULL;
+}
+
+static int by_id(const void *a, const void *b)
+{
+    const int32_t x = ((const int32_t *)a)[0], y = ((const int32_t *)b)[0];
+    return (x > y) - (x < y);
+}
+
+/* Keeps the ids the solid publishes and the reference velocity of each (the one sent,
+ * or an implicit iteration's window-mean velocity), sorted for the loads' lookup. */
+static int remember_sent(fsi_participant *p, const fsi_interface *d, const double *velocity)
+{
+    const int n = d->n;
+    if (n > p->sent_capacity) {
+        const size_t cap = (size_t)n + (size_t)n / 4 + 16;
+        int failed = 0;
+        p->sent_id = fsi_grow(p->sent_id, cap * sizeof *p->sent_id, &failed);
+        p->sent_velocity = fsi_grow(p->sent_velocity, cap * FSI_DIM * sizeof(double), &failed);
+        p->sent_order = fsi_grow(p->sent_order, cap * sizeof *p->sent_order, &failed);
+        if (failed) {
+            fsi_error("fsi_write_interface: out of memory for %d interface particles", n);
+            return -1;
+        }
+        p->sent_capacity = (int)cap;
+    }
+    p->sent_n = n;
+    if (n == 0)
+        return 0;
+    memcpy(p->sent_id, d->id, (size_t)n * sizeof *p->sent_id);
+    memcpy(p->sent_velocity, velocity, (size_t)n * FSI_DIM * sizeof(double));
+    for (int k = 0; k < n; k++) {
+        p->sent_order[k][0] = d->id[k];
+        p->sent_order[k][1] = k;
+    }
+    qsort(p->sent_order, (size_t)n, sizeof *p->sent_order, by_id);
+    return 0;
+}
+
+/* The index in sent order of a particle id, or -1 when it was not sent. */
+static int sent_index(const fsi_participant *p, int32_t id, int guess)
+{
+    if (guess < p->sent_n && p->sent_id[guess] == id)
+        return guess;
+    const int32_t key[2] = {id, 0};
+    const int32_t(*hit)[2] = bsearch(key, p->sent_order, (size_t)p->sent_n,
+                                      sizeof *p->sent_order, by_id);
+    return hit ? (*hit)[1] : -1;
 }
 
 /* The first array a solid state of n > 0 particles lacks, or NULL. */
@@ -502,6 +611,7 @@ int fsi_write_interface(fsi_participant *p, const fsi_interface *d)
         }
         fsi_solid_state_t m = {0};
         m.header.window = p->window;
+        m.header.iteration = p->iteration;
         m.dim = FSI_DIM;
         m.n = d->n;
         m.n_components = d->n * FSI_DIM;
@@ -509,12 +619,26 @@ int fsi_write_interface(fsi_participant *p, const fsi_interface *d)
         m.position = d->position;
         m.velocity = d->velocity;
         m.acceleration = d->acceleration;
+        if (p->implicit_solid) {
+            char msg[512];
+            implicit_solid *is = p->implicit_solid;
+            if (implicit_solid_motion(is, p->iteration, p->dt, p->dt_prev, d, msg,
+                                      sizeof msg) != 0) {
+                fsi_error("fsi_write_interface: %s", msg);
+                return -1;
+            }
+            m.velocity = is->v_sent;
+            m.acceleration = is->a_sent;
+        }
+        if (remember_sent(p, d, p->implicit_solid ? p->implicit_solid->u_in : d->velocity) != 0)
+            return -1;
         m.volume = d->volume;
         m.density = d->density;
         return fsi_bus_publish(p->bus, FSI_MSG_SOLID_STATE, &m);
     }
     fsi_fluid_load_t m = {0};
     m.header.window = p->window;
+    m.header.iteration = p->iteration;
     m.dim = FSI_DIM;
     m.n = d->n;
     m.n_components = d->n * FSI_DIM;
@@ -527,14 +651,15 @@ int fsi_write_interface(fsi_participant *p, const fsi_interface *d)
 
 static int has_interface_data(const fsi_participant *p)
 {
-    return p->other.window == p->window;
+    return p->other.window == p->window && p->other.iteration == p->iteration;
 }
 
 static void request_interface(fsi_participant *p)
 {
     int solid_waits = strcmp(p->role, "solid") == 0;
     fsi_bus_request_resend(p->bus, peer_with_role(p, other_role(p)),
-                           solid_waits ? FSI_MSG_FLUID_LOAD : FSI_MSG_SOLID_STATE, p->window, 0);
+                           solid_waits ? FSI_MSG_FLUID_LOAD : FSI_MSG_SOLID_STATE, p->window,
+                           p->iteration);
 }
 
 int fsi_read_interface(fsi_participant *p, fsi_interface *d)
@@ -543,7 +668,26 @@ int fsi_read_interface(fsi_participant *p, fsi_interface *d)
     if (!fsi_coupled(p))
         return 0;
     wait_for(p, has_interface_data, request_interface, &p->interface_wait);
-    const interface_slot *s = &p->other;
+    interface_slot *s = &p->other;
+    if (strcmp(p->role, "solid") == 0) {
+        /* Each load's reference velocity, and its force for the implicit verdict;
+         * particles without a load have none. */
+        implicit_solid *is = p->implicit_solid;
+        if (is)
+            memset(is->force, 0, (size_t)is->n * FSI_DIM * sizeof(double));
+        for (int j = 0; j < s->n; j++) {
+            const int k = sent_index(p, s->id[j], j);
+            double *u = &s->velocity[j * FSI_DIM];
+            if (k < 0) {
+                for (int c = 0; c < FSI_DIM; c++)
+                    u[c] = 0.0;
+                continue;
+            }
+            memcpy(u, &p->sent_velocity[k * FSI_DIM], FSI_DIM * sizeof(double));
+            if (is && k < is->n)
+                implicit_solid_set_force(is, k, &s->force[j * FSI_DIM]);
+        }
+    }
     d->n = s->n;
     d->id = s->id;
     d->position = s->position;
@@ -568,7 +712,17 @@ static int send_done(fsi_participant *p, int status, double dt_next_max, int n_s
 {
     fsi_done_t d = {0};
     d.header.window = p->window;
+    d.header.iteration = p->iteration;
     d.status = status;
+    d.converged = -1;
+    if (p->implicit_solid && fsi_coupled(p) && status == FSI_STATUS_OK) {
+        const implicit_verdict *v = &p->implicit_solid->verdict;
+        d.converged = v->converged;
+        d.displacement_residual = v->displacement_residual;
+        d.force_residual = v->force_residual;
+        d.history_columns = v->history_columns;
+        d.history_restarted = v->history_restarted;
+    }
     d.dt_next_max = dt_next_max;
     d.n_probes = p->n_probes;
     d.probe_values = p->probe_values;
@@ -619,8 +773,14 @@ int fsi_advance(fsi_participant *p, double dt_next_max)
 {
     test_stall_switch(p);
     test_slow_switch(p);
+    int rc = send_done(p, FSI_STATUS_OK, dt_next_max, 0, NULL, NULL);
     p->window_complete = 1;
-    return send_done(p, FSI_STATUS_OK, dt_next_max, 0, NULL, NULL);
+    if (p->implicit) {
+        /* The coupler's verdict: the next grant is another window, or this one again. */
+        wait_for(p, has_next_step, request_step, &p->step_wait);
+        p->window_complete = p->next_window != p->window;
+    }
+    return rc;
 }
 
 void fsi_abort(fsi_participant *p, const char *fmt, ...)
@@ -633,6 +793,7 @@ void fsi_abort(fsi_participant *p, const char *fmt, ...)
     fsi_error("%s", reason);
     fsi_abort_t a = {0};
     a.header.window = p->window;
+    a.header.iteration = p->iteration;
     a.culprit = p->name;
     a.reason = reason;
     /* Sent a few times: UDP may lose one, and the coupler's watchdog is the slow path. */
@@ -699,6 +860,12 @@ int fsi_close(fsi_participant *p, const fsi_timers *timers)
     fsi_bus_close(p->bus);
     fsi_case_free(p->case_file);
     free_slot(&p->other);
+    free(p->sent_id);
+    free(p->sent_velocity);
+    free(p->sent_order);
+    if (p->implicit_solid)
+        implicit_solid_free(p->implicit_solid);
+    free(p->implicit_solid);
     for (int i = 0; i < p->n_probes; i++)
         free(p->probe_names[i]);
     free(p);

@@ -5,8 +5,10 @@
 
 /* Bump when proto/fsi.lcm or the rules below change incompatibly. History (also in
  * docs/protocol.md): version 2 added impedance to fluid_load_t, version 3 added
- * density to solid_state_t. */
-#define FSI_PROTOCOL_VERSION 3
+ * density to solid_state_t, version 4 the implicit coupling's verdict to done_t
+ * (converged, residuals, history) and repeated windows (step_t of the same window
+ * with a higher header.iteration). */
+#define FSI_PROTOCOL_VERSION 4
 
 /* Message kinds; each travels on its own channel (fsi_msg_channel). */
 typedef enum {

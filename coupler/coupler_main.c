@@ -42,7 +42,11 @@ typedef struct {
     char host[256];
     double last_heard;
     double dt_proposed;
-    int done_window;
+    int done_window, done_iteration;    /* the last (window, iteration) reported done */
+    /* The solid's verdict on its last iteration (implicit coupling; -1: not judged). */
+    int converged;
+    double displacement_residual, force_residual;
+    int history_columns, history_restarted;
     int n_probes;
     char **probe_names;
     double *probe_values;
@@ -62,6 +66,7 @@ typedef struct {
     participant_info part[MAX_PARTICIPANTS];
     int n_part;
     int window;
+    int iteration;          /* sub-iteration of the window (implicit coupling) */
     double t;
     int failed;
     int failure_relayed;    /* the failure was a participant's own abort, not ours to detect */
@@ -69,6 +74,11 @@ typedef struct {
     char reason[1024];
     fsi_progress progress;
     fsi_probes_csv probes;
+    fsi_probes_csv coupling_csv;    /* implicit: one row per iteration */
+    /* [run] scheme = implicit and what ends a window's iterations */
+    int implicit, min_iterations, max_iterations, stop_on_max_iterations;
+    long iterations_total, windows_iterated, windows_not_converged;
+    int iterations_most;
     double wall_start;
     /* Wall time from each grant to the last done_t: the cost of one coupling window. */
     double *window_wall;
@@ -158,9 +168,16 @@ static void take_register(coupler *c, participant_info *p, const fsi_register_t 
     send_welcome(c, p);
 }
 
+/* The participant has reported the current iteration of the current window. */
+static int done_now(const coupler *c, const participant_info *p)
+{
+    return p->done_window == c->window && p->done_iteration == c->iteration;
+}
+
 static void take_done(coupler *c, participant_info *p, const fsi_done_t *d)
 {
-    if (d->header.window != c->window || p->done_window >= c->window)
+    if (d->header.window != c->window || d->header.iteration != c->iteration ||
+        done_now(c, p))
         return;
     if (d->n_probes != p->n_probes) {
         fail(c, p->name, "participant '%s' sent %d probe values, registered %d", p->name,
@@ -173,6 +190,12 @@ static void take_done(coupler *c, participant_info *p, const fsi_done_t *d)
         return;
     }
     p->done_window = d->header.window;
+    p->done_iteration = d->header.iteration;
+    p->converged = d->converged;
+    p->displacement_residual = d->displacement_residual;
+    p->force_residual = d->force_residual;
+    p->history_columns = d->history_columns;
+    p->history_restarted = d->history_restarted;
     fsi_request_timer_arrived(&p->done_timer, fsi_wall_seconds(), fsi_bus_message_is_new(c->bus),
                               fsi_bus_measured_loss(c->bus));
     p->dt_proposed = d->dt_next_max;
@@ -267,7 +290,7 @@ static int wait_for_done(coupler *c)
         now = fsi_wall_seconds();
         if (window_timeout > 0 && now - started > window_timeout) {
             for (int i = 0; i < c->n_part; i++)
-                if (c->part[i].done_window < c->window) {
+                if (!done_now(c, &c->part[i])) {
                     fail(c, c->part[i].name,
                          "participant '%s' alive but window %d (t = %.9g s) not done after "
                          "%.0f s ([run] window_timeout): stuck or deadlocked",
@@ -279,11 +302,11 @@ static int wait_for_done(coupler *c)
         loss = fsi_bus_measured_loss(c->bus);
         for (int i = 0; i < c->n_part; i++) {
             participant_info *p = &c->part[i];
-            if (p->done_window >= c->window)
+            if (done_now(c, p))
                 continue;
             missing++;
             if (fsi_request_timer_due(&p->done_timer, now, loss))
-                fsi_bus_request_resend(c->bus, p->name, FSI_MSG_DONE, c->window, 0);
+                fsi_bus_request_resend(c->bus, p->name, FSI_MSG_DONE, c->window, c->iteration);
             next_event = fmin(next_event, p->done_timer.next_request);
         }
         if (!missing)
@@ -305,6 +328,7 @@ static void publish_step(coupler *c, double dt, int flags, int frame)
 {
     fsi_step_t s = {0};
     s.header.window = c->window;
+    s.header.iteration = c->iteration;
     s.t = c->t;
     s.dt = dt;
     s.flags = flags;
@@ -331,7 +355,7 @@ static int open_probes(coupler *c)
     for (int i = 0; i < c->n_part; i++)
         for (int j = 0; j < c->part[i].n_probes; j++)
             names[k++] = c->part[i].probe_names[j];
-    int rc = fsi_probes_csv_open(&c->probes, c->env.out_dir, n, names);
+    int rc = fsi_probes_csv_open(&c->probes, c->env.out_dir, "probes.csv", n, names);
     free(names);
     if (rc != 0)
         fail(c, FSI_COUPLER_NAME, "%s", c->probes.error);
@@ -371,6 +395,76 @@ static void record_window_wall(coupler *c, double seconds)
     c->window_wall[c->n_window_wall++] = seconds;
 }
 
+static const participant_info *solid_of(const coupler *c)
+{
+    for (int i = 0; i < c->n_part; i++)
+        if (strcmp(c->part[i].role, "solid") == 0)
+            return &c->part[i];
+    return NULL;
+}
+
+static int open_coupling_csv(coupler *c)
+{
+    char *names[] = {"window", "iteration", "dt", "displacement_residual", "force_residual",
+                     "converged", "history_columns", "history_restarted", "accepted"};
+    if (fsi_probes_csv_open(&c->coupling_csv, c->env.out_dir, "coupling.csv",
+                            (int)(sizeof names / sizeof names[0]), names) == 0)
+        return 0;
+    fail(c, FSI_COUPLER_NAME, "%s", c->coupling_csv.error);
+    return -1;
+}
+
+/* Implicit coupling: whether the iteration just done ends the window (1), the window
+ * is repeated (0) or the run stops (-1), from the solid's verdict (docs/coupling.md).
+ * A window of length zero, or a run without a solid or a fluid, has nothing to
+ * iterate. Every iteration becomes a row of coupling.csv. */
+static int judge_iteration(coupler *c, double dt)
+{
+    if (!c->implicit)
+        return 1;
+    const participant_info *solid = solid_of(c);
+    const int iterations = c->iteration + 1;
+    int verdict;
+    if (!solid || solid->converged < 0 || !(dt > 0.0))
+        verdict = 1;
+    else if (solid->converged && iterations >= c->min_iterations)
+        verdict = 1;
+    else if (iterations < c->max_iterations)
+        verdict = 0;
+    else if (c->stop_on_max_iterations) {
+        fail(c, FSI_COUPLER_NAME, "window %d (t = %.9g s, dt = %.6g s) did not converge in "
+             "%d iterations: displacement residual %.3g, force residual %.3g against "
+             "coupling_tolerance (raise coupling_max_iterations, shorten max_window, or "
+             "set coupling_on_max_iterations = continue)", c->window, c->t, dt, iterations,
+             solid->displacement_residual, solid->force_residual);
+        verdict = -1;
+    } else {
+        if (c->windows_not_converged++ < 10)
+            fsi_warn("window %d (t = %.9g s) accepted unconverged after %d iterations: "
+                     "displacement residual %.3g, force residual %.3g%s", c->window, c->t,
+                     iterations, solid->displacement_residual, solid->force_residual,
+                     c->windows_not_converged == 10 ? " (no more of these warnings)" : "");
+        verdict = 1;
+    }
+    if (solid && solid->converged >= 0 && dt > 0.0) {
+        const double row[] = {c->window, c->iteration, dt, solid->displacement_residual,
+                              solid->force_residual, solid->converged,
+                              solid->history_columns, solid->history_restarted,
+                              verdict == 1};
+        if (fsi_probes_csv_row(&c->coupling_csv, c->t, row) != 0) {
+            fail(c, FSI_COUPLER_NAME, "%s", c->coupling_csv.error);
+            return -1;
+        }
+        if (verdict == 1) {
+            c->windows_iterated++;
+            c->iterations_total += iterations;
+            if (iterations > c->iterations_most)
+                c->iterations_most = iterations;
+        }
+    }
+    return verdict;
+}
+
 static int run_windows(coupler *c)
 {
     double t_end = fsi_case_get_real(c->case_file, "run", "end_time", 0.0);
@@ -379,19 +473,30 @@ static int run_windows(coupler *c)
                              fsi_case_get_real(c->case_file, "run", "output_interval", 0.01),
                              fsi_case_get_real(c->case_file, "run", "probe_interval", 1e-3),
                              fsi_case_get_real(c->case_file, "run", "max_window", 1e-3));
-    if (open_probes(c) != 0)
+    if (open_probes(c) != 0 || (c->implicit && open_coupling_csv(c) != 0))
         return -1;
 
     /* Window 0 has zero length: everyone exchanges, writes frame 0 and samples probes
      * at t = 0, so the first output and the first probe row describe the initial state. */
     c->window = 0;
+    c->iteration = 0;
     c->t = 0.0;
     fsi_window_plan plan = {0.0, 0.0, 0, 1, 0};
+    double granted = 0.0;
     for (;;) {
-        double granted = fsi_wall_seconds();
+        if (c->iteration == 0)
+            granted = fsi_wall_seconds();
         publish_step(c, plan.dt, plan.probe ? FSI_STEP_PROBE : 0, plan.frame);
         if (wait_for_done(c) != 0)
             return -1;
+        const int verdict = judge_iteration(c, plan.dt);
+        if (verdict < 0)
+            return -1;
+        if (verdict == 0) {
+            c->iteration++;     /* the same window again, everyone from its start */
+            continue;
+        }
+        c->iteration = 0;
         if (c->window > 0)
             record_window_wall(c, fsi_wall_seconds() - granted);
         c->t = plan.t_next;
@@ -478,6 +583,13 @@ static int write_summary(coupler *c)
     fprintf(log, "\n[coupler]\nwindows = %d\nsimulated_time = %.9g s\nwall_time = %.3f s\n"
                  "windows_per_second = %.1f\n",
             c->window, c->t, wall, wall > 0 ? c->window / wall : 0.0);
+    if (c->implicit)
+        fprintf(log, "coupling_iterations = %ld\ncoupling_iterations_per_window = %.3f\n"
+                     "coupling_iterations_most = %d\ncoupling_windows_not_converged = %ld\n",
+                c->iterations_total,
+                c->windows_iterated > 0 ? (double)c->iterations_total / (double)c->windows_iterated
+                                        : 0.0,
+                c->iterations_most, c->windows_not_converged);
     write_window_timing(log, c);
     write_bus_counters(log, "coupler", fsi_bus_get_counters(c->bus));
     for (int i = 0; i < c->n_part; i++) {
@@ -508,6 +620,12 @@ static int setup(coupler *c)
     if (!c->case_file)
         return -1;
     fsi_run_env_read_timing(&c->env, c->case_file);
+    c->implicit = fsi_case_choice_is(c->case_file, "run", "scheme", "implicit");
+    c->min_iterations = (int)fsi_case_get_int(c->case_file, "run", "coupling_min_iterations", 1);
+    c->max_iterations = (int)fsi_case_get_int(c->case_file, "run", "coupling_max_iterations", 50);
+    c->stop_on_max_iterations =
+        !fsi_case_choice_is(c->case_file, "run", "coupling_on_max_iterations", "continue");
+    c->coupling_csv.fd = -1;
     for (int r = 0; r < MAX_PARTICIPANTS; r++) {
         if (!fsi_case_has_section(c->case_file, roles[r]))
             continue;
@@ -515,6 +633,7 @@ static int setup(coupler *c)
         snprintf(p->name, sizeof p->name, "%s", roles[r]);
         snprintf(p->role, sizeof p->role, "%s", roles[r]);
         p->done_window = -1;
+        p->converged = -1;
         p->dt_proposed = DBL_MAX;
     }
     if (c->n_part == 0) {
@@ -531,6 +650,7 @@ static int setup(coupler *c)
 static void teardown(coupler *c)
 {
     fsi_probes_csv_close(&c->probes);
+    fsi_probes_csv_close(&c->coupling_csv);
     fsi_bus_close(c->bus);
     free(c->window_wall);
     for (int i = 0; i < c->n_part; i++) {
@@ -576,6 +696,8 @@ int main(void)
     }
     if (fsi_probes_csv_close(&c.probes) != 0)
         fail(&c, FSI_COUPLER_NAME, "%s", c.probes.error);
+    if (fsi_probes_csv_close(&c.coupling_csv) != 0)
+        fail(&c, FSI_COUPLER_NAME, "%s", c.coupling_csv.error);
     if (fflush(stdout) != 0 || ferror(stdout) || fsi_log_write_error())
         fail(&c, FSI_COUPLER_NAME, "cannot write its log (stdout/stderr, %s/coupler.log "
              "under fsi run): %s", c.env.out_dir,

@@ -38,13 +38,13 @@ static int reserve(char **buf, size_t *cap, size_t need)
     return 0;
 }
 
-int fsi_probes_csv_open(fsi_probes_csv *csv, const char *dir, int n_columns,
+int fsi_probes_csv_open(fsi_probes_csv *csv, const char *dir, const char *file, int n_columns,
                         char *const *column_names)
 {
     csv->n_columns = n_columns;
     csv->committed = 0;
     csv->error[0] = '\0';
-    snprintf(csv->path, sizeof csv->path, "%s/probes.csv", dir);
+    snprintf(csv->path, sizeof csv->path, "%s/%s", dir, file);
     csv->fd = open(csv->path, O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
     if (csv->fd < 0) {
         snprintf(csv->error, sizeof csv->error, "cannot create %s: %s", csv->path,

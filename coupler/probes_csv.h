@@ -1,5 +1,5 @@
-/* probes.csv: one header line "time,<probe>_<quantity>,..." and one row per probe
- * time. Each row reaches the file with one write(); a failed or short write (disk
+/* A time series as CSV (probes.csv, coupling.csv): one header line
+ * "time,<column>,..." and one row per time. Each row reaches the file with one write(); a failed or short write (disk
  * full) is cut back to the last complete row, so the file always ends at a row. */
 #ifndef FSI_PROBES_CSV_H
 #define FSI_PROBES_CSV_H
@@ -14,8 +14,8 @@ typedef struct {
     char error[4400];  /* the last failure: file and system error text */
 } fsi_probes_csv;
 
-/* Opens DIR/probes.csv and writes the header; returns 0 or -1 (message in error). */
-int fsi_probes_csv_open(fsi_probes_csv *csv, const char *dir, int n_columns,
+/* Opens DIR/FILE and writes the header; returns 0 or -1 (message in error). */
+int fsi_probes_csv_open(fsi_probes_csv *csv, const char *dir, const char *file, int n_columns,
                         char *const *column_names);
 /* values[n_columns], printed exactly (%.17g) so runs compare bit for bit. Returns 0,
  * or -1 with csv->error set when the row could not be written (the file then still

@@ -12,9 +12,51 @@ static const fsi_key_spec run_keys[] = {
      "Name of the scene, printed in the run log."},
     {"end_time", FSI_KEY_REAL, "s", NULL, FSI_BOUND_MIN_OPEN, 0, 0, NULL,
      "Simulated time at which the run ends."},
-    {"scheme", FSI_KEY_CHOICE, "-", "serial_staggered", 0, 0, 0, "serial_staggered",
-     "Coupling scheme: serial_staggered = solid state at t_k, fluid advances, fluid loads, "
-     "solid advances (sub-cycling inside the window)."},
+    {"scheme", FSI_KEY_CHOICE, "-", "serial_staggered", 0, 0, 0, "serial_staggered|implicit",
+     "Coupling scheme: serial_staggered = explicit: solid state at t_k, fluid advances, "
+     "fluid loads, solid advances (sub-cycling inside the window), once per window; "
+     "implicit = the same sequence repeated within the window, both sides restarting from "
+     "the window's start, until the interface motion and loads converge "
+     "(coupling_tolerance), with the motion of each repetition chosen by "
+     "coupling_acceleration (docs/coupling.md, Implicit coupling)."},
+    {"coupling_tolerance", FSI_KEY_REAL, "-", "1e-4", FSI_BOUND_MIN_OPEN | FSI_BOUND_MAX, 0,
+     1.0, NULL,
+     "Implicit: a window has converged when the relative residual of the interface "
+     "displacement over the window, |d_out - d_in| / |d_out|, and the relative change of "
+     "the fluid's loads from the last iteration, |F_i - F_{i-1}| / |F_i|, are both below "
+     "this (the force measure from the second iteration on)."},
+    {"coupling_absolute_tolerance", FSI_KEY_REAL, "m", "1e-12", FSI_BOUND_MIN, 0, 0, NULL,
+     "Implicit: a displacement residual below this RMS over the interface particles counts "
+     "as converged whatever the relative measure says (a structure at rest moves by "
+     "round-off only)."},
+    {"coupling_min_iterations", FSI_KEY_INT, "-", "1", FSI_BOUND_MIN, 1, 0, NULL,
+     "Implicit: iterations every window takes before convergence is judged."},
+    {"coupling_max_iterations", FSI_KEY_INT, "-", "50", FSI_BOUND_MIN, 1, 0, NULL,
+     "Implicit: iterations after which a window that has not converged is given up; "
+     "coupling_on_max_iterations says what then."},
+    {"coupling_on_max_iterations", FSI_KEY_CHOICE, "-", "stop", 0, 0, 0, "stop|continue",
+     "Implicit: stop = the run stops, naming the window, its time and the residuals; "
+     "continue = the last iteration is accepted with a warning (counted in the run log)."},
+    {"coupling_acceleration", FSI_KEY_CHOICE, "-", "iqn_ils", 0, 0, 0,
+     "constant|aitken|iqn_ils",
+     "Implicit: how the next iteration's interface motion follows from the last ones: "
+     "constant under-relaxation (coupling_relaxation), Aitken's dynamic relaxation "
+     "(Kuttler & Wall 2008) or interface quasi-Newton with least-squares Jacobian, IQN-ILS "
+     "(Degroote, Bathe & Vierendeels 2009)."},
+    {"coupling_relaxation", FSI_KEY_REAL, "-", "0.5", FSI_BOUND_MIN_OPEN | FSI_BOUND_MAX, 0,
+     1.0, NULL,
+     "Implicit: the relaxation factor of constant relaxation, and the first one of Aitken "
+     "and of IQN-ILS (when it has no history yet) in each window."},
+    {"coupling_reuse", FSI_KEY_INT, "-", "8", FSI_BOUND_MIN, 0, 0, NULL,
+     "Implicit, IQN-ILS: accepted windows whose secant pairs are reused; the history "
+     "restarts when the set of interface particles changes (fracture, particles entering "
+     "the fluid's reach)."},
+    {"coupling_filter", FSI_KEY_REAL, "-", "1e-10", FSI_BOUND_MIN, 0, 0, NULL,
+     "Implicit, IQN-ILS: a secant pair whose part not spanned by the newer ones is below "
+     "this fraction of its norm is dropped (the relative Gram-Schmidt filter, QR2 of "
+     "Haelterman et al. 2016)."},
+    {"coupling_max_columns", FSI_KEY_INT, "-", "100", FSI_BOUND_MIN, 1, 0, NULL,
+     "Implicit, IQN-ILS: most secant pairs kept; the oldest go first."},
     {"max_window", FSI_KEY_REAL, "s", "1e-3", FSI_BOUND_MIN_OPEN, 0, 0, NULL,
      "Largest coupling window; the window is the smallest of this and the participants' "
      "proposed stable steps."},
