@@ -1358,6 +1358,20 @@ static void check_external(diag_list *d, const fsi_case *c, const section *s)
     else if (!*e->value)
         report(d, c, &e->from, s->name, "executable",
                "value is empty (solver = external needs the program to run)");
+    /* Implicit coupling and coupled checkpoints restore a participant's state: a program
+     * that cannot must say so before the run, not fail in it (docs/checkpoints.md). */
+    const int implicit = fsi_case_choice_is(c, "run", "scheme", "implicit");
+    const int checkpoints = fsi_case_get_real(c, "run", "checkpoint_interval", 0.0) > 0.0;
+    if ((implicit || checkpoints) && !fsi_case_get_bool(c, s->name, "checkpoints", 0)) {
+        const entry *k = find_entry(s, "checkpoints");
+        report(d, c, k ? &k->from : &s->from, s->name, "checkpoints",
+               implicit ? "the run's scheme = implicit repeats windows, which needs a program "
+                          "that saves and restores its state (fsi_requires_writing_checkpoint, "
+                          "docs/participant_api.md): set checkpoints = true if this one does"
+                        : "the run takes coupled checkpoints (checkpoint_interval), which needs "
+                          "a program that writes its state (fsi_write_checkpoint, "
+                          "docs/checkpoints.md): set checkpoints = true if this one does");
+    }
 }
 
 static void validate_participant(diag_list *d, const fsi_case *c, section *s,

@@ -320,3 +320,86 @@ void fsi_accel_free(fsi_accel *a)
     free(a->window_of);
     free(a);
 }
+
+/* The counters and sizes, one entry. */
+typedef struct {
+    int n, ncomp, m, in_window, iteration, windows, columns, capacity_n, capacity_columns;
+    size_t capacity_m;
+    double omega;
+} saved_counters;
+
+static void entry_name(char *out, size_t size, const char *prefix, const char *what)
+{
+    snprintf(out, size, "%s%s", prefix, what);
+}
+
+int fsi_accel_save(const fsi_accel *a, fsi_state *st, const char *prefix)
+{
+    char name[64];
+    const saved_counters c = {a->n,       a->ncomp,      a->m,          a->in_window,
+                              a->iteration, a->windows,  a->columns,    a->capacity_n,
+                              a->capacity_columns, a->capacity_m, a->omega};
+    const size_t m = a->m > 0 ? (size_t)a->m : 0, cols = (size_t)a->columns;
+    int rc = 0;
+    entry_name(name, sizeof name, prefix, "counters");
+    rc |= fsi_state_put(st, name, &c, sizeof c);
+    entry_name(name, sizeof name, prefix, "id");
+    rc |= fsi_state_put(st, name, a->id, a->n > 0 ? (size_t)a->n * sizeof *a->id : 0);
+    const struct {
+        const char *what;
+        const void *data;
+        size_t bytes;
+    } arrays[] = {{"r", a->r, m * sizeof(double)},
+                  {"r_prev", a->r_prev, m * sizeof(double)},
+                  {"xt_prev", a->xt_prev, m * sizeof(double)},
+                  {"v", a->v, cols * m * sizeof(double)},
+                  {"w", a->w, cols * m * sizeof(double)},
+                  {"window_of", a->window_of, cols * sizeof(int)}};
+    for (size_t k = 0; k < sizeof arrays / sizeof arrays[0]; k++) {
+        entry_name(name, sizeof name, prefix, arrays[k].what);
+        rc |= fsi_state_put(st, name, arrays[k].data, arrays[k].data ? arrays[k].bytes : 0);
+    }
+    return rc ? -1 : 0;
+}
+
+int fsi_accel_restore(fsi_accel *a, const fsi_state *st, const char *prefix)
+{
+    char name[64];
+    saved_counters c;
+    entry_name(name, sizeof name, prefix, "counters");
+    if (fsi_state_get(st, name, &c, sizeof c) != 0)
+        return -1;
+    /* The capacities as they were: how many columns fit decides which go first. */
+    if (c.capacity_n > 0 || c.capacity_m > 0)
+        if (reserve(a, c.capacity_n, c.capacity_m) != 0)
+            return -1;
+    a->n = c.n;
+    a->ncomp = c.ncomp;
+    a->m = c.m;
+    a->in_window = c.in_window;
+    a->iteration = c.iteration;
+    a->windows = c.windows;
+    a->columns = c.columns;
+    a->omega = c.omega;
+    const size_t m = a->m > 0 ? (size_t)a->m : 0, cols = (size_t)a->columns;
+    struct {
+        const char *what;
+        void *data;
+        size_t bytes;
+    } arrays[] = {{"id", a->id, a->n > 0 ? (size_t)a->n * sizeof *a->id : 0},
+                  {"r", a->r, m * sizeof(double)},
+                  {"r_prev", a->r_prev, m * sizeof(double)},
+                  {"xt_prev", a->xt_prev, m * sizeof(double)},
+                  {"v", a->v, cols * m * sizeof(double)},
+                  {"w", a->w, cols * m * sizeof(double)},
+                  {"window_of", a->window_of, cols * sizeof(int)}};
+    for (size_t k = 0; k < sizeof arrays / sizeof arrays[0]; k++) {
+        entry_name(name, sizeof name, prefix, arrays[k].what);
+        const size_t saved = fsi_state_size(st, name);
+        if (saved != arrays[k].bytes && !(saved == 0 && !arrays[k].data))
+            return -1;
+        if (arrays[k].bytes > 0 && fsi_state_get(st, name, arrays[k].data, arrays[k].bytes) != 0)
+            return -1;
+    }
+    return 0;
+}

@@ -46,6 +46,8 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "state_store.h"
+
 typedef enum { FSI_ACCEL_CONSTANT, FSI_ACCEL_AITKEN, FSI_ACCEL_IQN_ILS } fsi_accel_kind;
 
 typedef struct {
@@ -84,6 +86,14 @@ void fsi_accel_end_window(fsi_accel *a);
  * quasi-Newton step. */
 int fsi_accel_columns(const fsi_accel *a);
 double fsi_accel_last_omega(const fsi_accel *a);
+
+/* Everything the acceleration carries from one window to the next (the ids, the
+ * reused secant pairs, the counters), under names starting with prefix, into st; and
+ * back into a created with the same settings. A restored acceleration goes on exactly
+ * as the saved one would have (a coupled checkpoint, docs/checkpoints.md). 0, or -1
+ * (memory; restore: an entry missing or of the wrong size). */
+int fsi_accel_save(const fsi_accel *a, fsi_state *st, const char *prefix);
+int fsi_accel_restore(fsi_accel *a, const fsi_state *st, const char *prefix);
 
 void fsi_accel_free(fsi_accel *a);
 

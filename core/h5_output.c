@@ -623,6 +623,89 @@ static void remove_stale(const fsi_h5_writer *w)
     closedir(d);
 }
 
+/* One field of a frame file read back: its name, components and kind. */
+static herr_t field_of_frame(hid_t group, const char *name, const H5L_info_t *info, void *data)
+{
+    (void)info;
+    frame_rec *f = data;
+    if (strcmp(name, "position") == 0)
+        return 0;
+    hid_t ds = H5Dopen2(group, name, H5P_DEFAULT);
+    if (ds < 0)
+        return -1;
+    hid_t space = H5Dget_space(ds), type = H5Dget_type(ds);
+    hsize_t dims[2] = {0, 1};
+    const int rank = H5Sget_simple_extent_dims(space, dims, NULL);
+    const int is_int = H5Tget_class(type) == H5T_INTEGER;
+    H5Tclose(type);
+    H5Sclose(space);
+    H5Dclose(ds);
+    if (rank < 1 || rank > 2)
+        return -1;
+    return frame_rec_add(f, name, rank == 2 ? (int)dims[1] : 1, is_int) == 0 ? 0 : -1;
+}
+
+/* A restarted run (FSI_RESTART_FRAMES = F, docs/checkpoints.md) keeps frames 0 .. F-1 of
+ * the run it goes on with: their records are read back from their files (time, points,
+ * fields), so that the master and the sidecar list them again; later frames (written
+ * after the checkpoint, before the run stopped) are removed. 0, or -1 with a message. */
+static int resume_frames(fsi_h5_writer *w, int frames)
+{
+    for (int k = 0; k < frames; k++) {
+        char *path = frame_file_name(w, k, "");
+        hid_t file = path ? H5Fopen(path, H5F_ACC_RDONLY, H5P_DEFAULT) : -1;
+        frame_rec f = {.frame = k};
+        int ok = file >= 0;
+        if (ok) {
+            hid_t attr = H5Aopen(file, "time", H5P_DEFAULT);
+            ok = attr >= 0 && H5Aread(attr, H5T_NATIVE_DOUBLE, &f.time) >= 0;
+            if (attr >= 0)
+                H5Aclose(attr);
+            hid_t ds = ok ? H5Dopen2(file, "position", H5P_DEFAULT) : -1;
+            hsize_t dims[2] = {0, 0};
+            if (ds >= 0) {
+                hid_t space = H5Dget_space(ds);
+                ok = H5Sget_simple_extent_dims(space, dims, NULL) == 2;
+                H5Sclose(space);
+                H5Dclose(ds);
+            } else
+                ok = 0;
+            f.n = (int)dims[0];
+            ok = ok && H5Literate(file, H5_INDEX_NAME, H5_ITER_INC, NULL, field_of_frame, &f) >= 0;
+            H5Fclose(file);
+        }
+        if (!ok || (w->cur = f, push_done(w)) != 0) {
+            h5_error("h5 output: restart: frame %d of the run (%s) cannot be read back", k,
+                     path ? path : w->frames_dir);
+            frame_rec_clear(&f);
+            memset(&w->cur, 0, sizeof w->cur);
+            free(path);
+            return -1;
+        }
+        free(path);
+        w->last_frame = k;
+    }
+    /* Frames after the checkpoint, and temporaries. */
+    DIR *d = opendir(w->frames_dir);
+    struct dirent *e;
+    while (d && (e = readdir(d)) != NULL) {
+        int k;
+        char tail[8] = "";
+        const size_t len = strlen(e->d_name);
+        const int tmp = len > 7 && strcmp(e->d_name + len - 7, ".h5.tmp") == 0;
+        const int later = sscanf(e->d_name, "%d.h5%7s", &k, tail) == 1 && k >= frames;
+        if (tmp || later) {
+            char *p = str_printf("%s/%s", w->frames_dir, e->d_name);
+            if (p)
+                remove(p);
+            free(p);
+        }
+    }
+    if (d)
+        closedir(d);
+    return 0;
+}
+
 fsi_h5_writer *fsi_h5_create(const char *dir, const char *name, const char *solver)
 {
     /* Failures are reported once by us, with file and field names and the cause
@@ -655,7 +738,14 @@ fsi_h5_writer *fsi_h5_create(const char *dir, const char *name, const char *solv
         fsi_h5_close(w);
         return NULL;
     }
-    remove_stale(w);
+    const char *resume = getenv("FSI_RESTART_FRAMES");
+    if (resume && *resume) {
+        if (resume_frames(w, atoi(resume)) != 0) {
+            fsi_h5_close(w);
+            return NULL;
+        }
+    } else
+        remove_stale(w);
     if (write_static_file(w, NULL, 0, 0, NULL, 0, 0) < 0 || write_master(w) < 0 ||
         write_xmf(w) < 0) {
         fsi_h5_close(w);

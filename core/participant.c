@@ -1,7 +1,9 @@
 #include "participant.h"
 
+#include <errno.h>
 #include <limits.h>
 #include <math.h>
+#include <sys/stat.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -23,6 +25,7 @@
 #include "participant_env.h"
 #include "participant_implicit.h"
 #include "request_timer.h"
+#include "state_file.h"
 
 #define MAX_PROBES 64
 #define MAX_PEERS 8
@@ -82,6 +85,12 @@ struct fsi_participant {
     int32_t (*sent_order)[2];
     implicit_solid *implicit_solid;     /* solid of an implicit run */
 
+    /* Coupled checkpoints (docs/checkpoints.md): the state read at a restart, and
+     * whether this window's checkpoint was written (reported in done_t). */
+    fsi_state restart, restart_library;
+    int restarting;
+    int checkpoint_written;
+
     double coupler_last_heard;
     int coupler_finished;
     int aborted;
@@ -96,6 +105,9 @@ struct fsi_participant {
     fsi_wait_estimate welcome_wait, step_wait, interface_wait;
     int taken_new;
 };
+
+static int read_restart(fsi_participant *p);
+static int apply_restart(fsi_participant *p);
 
 static const char *other_role(const fsi_participant *p)
 {
@@ -372,6 +384,16 @@ fsi_participant *fsi_open(const char *name, const char *role, const char *case_p
         }
     }
     p->t_wait = fsi_timer_index(&p->lib_timers, "coupling_wait");
+    if (read_restart(p) != 0) {
+        if (p->implicit_solid)
+            implicit_solid_free(p->implicit_solid);
+        free(p->implicit_solid);
+        fsi_state_free(&p->restart);
+        fsi_state_free(&p->restart_library);
+        fsi_case_free(p->case_file);
+        free(p);
+        return NULL;
+    }
     p->bus = fsi_bus_open(p->env.lcm_url, p->name, p->env.run_id, on_message, p);
     if (!p->bus) {
         fsi_case_free(p->case_file);
@@ -448,6 +470,8 @@ int fsi_ongoing(fsi_participant *p)
         return 0;
     }
     if (!p->registered) {
+        if (p->restarting && apply_restart(p) != 0)
+            return 0;
         p->registered = 1;
         send_register(p);
         wait_for(p, is_welcomed, send_register, &p->welcome_wait);
@@ -463,6 +487,7 @@ int fsi_ongoing(fsi_participant *p)
     }
     p->window = p->next_window;
     p->iteration = p->next_iteration;
+    p->checkpoint_written = 0;
     p->t = p->next_t;
     p->dt = p->next_dt;
     p->flags = p->next_flags;
@@ -505,7 +530,109 @@ int fsi_iteration(const fsi_participant *p)
 
 int fsi_requires_writing_checkpoint(const fsi_participant *p)
 {
-    return p->implicit && p->iteration == 0;
+    return p->iteration == 0 && (p->implicit || (p->flags & FSI_STEP_CHECKPOINT));
+}
+
+/* OUT/checkpoints/window_K: the checkpoint of the state at window K's start. */
+static void checkpoint_dir(const fsi_participant *p, int window, char *out, size_t size)
+{
+    snprintf(out, size, "%s/checkpoints/window_%08d", p->out_dir, window);
+}
+
+static int make_dir(const char *path)
+{
+    return mkdir(path, 0755) == 0 || errno == EEXIST ? 0 : -1;
+}
+
+/* What the library carries across windows itself, beside the solver's state. */
+static int library_state(const fsi_participant *p, fsi_state *st)
+{
+    fsi_state_clear(st);
+    int rc = fsi_state_put(st, "library.dt_prev", &p->dt_prev, sizeof p->dt_prev) |
+             fsi_state_put(st, "library.probe_values", p->probe_values,
+                           (size_t)p->n_probes * sizeof(double));
+    if (p->implicit_solid)
+        rc |= fsi_accel_save(p->implicit_solid->accel, st, "library.accel.");
+    return rc ? -1 : 0;
+}
+
+int fsi_write_checkpoint(fsi_participant *p, const fsi_state *st)
+{
+    if (!(p->flags & FSI_STEP_CHECKPOINT) || p->iteration != 0 || p->checkpoint_written)
+        return 0;
+    char dir[PATH_MAX + 64], path[PATH_MAX + 192], msg[PATH_MAX + 320];
+    snprintf(dir, sizeof dir, "%s/checkpoints", p->out_dir);
+    make_dir(dir);
+    checkpoint_dir(p, p->window, dir, sizeof dir);
+    if (make_dir(dir) != 0) {
+        fsi_error("cannot create the checkpoint folder %s: %s", dir, strerror(errno));
+        return -1;
+    }
+    if (st->failed) {
+        fsi_error("the state to checkpoint at window %d is incomplete (out of memory)",
+                  p->window);
+        return -1;
+    }
+    fsi_state own = {0};
+    snprintf(path, sizeof path, "%s/%s.state", dir, p->name);
+    int rc = fsi_state_write_file(st, path, msg, sizeof msg);
+    if (rc == 0) {
+        snprintf(path, sizeof path, "%s/%s.library.state", dir, p->name);
+        rc = library_state(p, &own) != 0 ? -1 : fsi_state_write_file(&own, path, msg, sizeof msg);
+        if (own.failed)
+            snprintf(msg, sizeof msg, "out of memory for the library's state");
+    }
+    fsi_state_free(&own);
+    if (rc != 0) {
+        fsi_error("checkpoint of window %d: %s", p->window, msg);
+        return -1;
+    }
+    p->checkpoint_written = 1;
+    return 0;
+}
+
+const fsi_state *fsi_restart_state(const fsi_participant *p)
+{
+    return p->restarting ? &p->restart : NULL;
+}
+
+/* FSI_RESTART_DIR (set by fsi run --restart): the solver's state and the library's
+ * own, read at fsi_open (the solver restores its part before its first window). 0, or
+ * -1 with a message. */
+static int read_restart(fsi_participant *p)
+{
+    const char *dir = getenv("FSI_RESTART_DIR");
+    if (!dir || !*dir)
+        return 0;
+    char path[PATH_MAX + 128], msg[PATH_MAX + 256];
+    snprintf(path, sizeof path, "%s/%s.state", dir, p->name);
+    int rc = fsi_state_read_file(&p->restart, path, msg, sizeof msg);
+    if (rc == 0) {
+        snprintf(path, sizeof path, "%s/%s.library.state", dir, p->name);
+        rc = fsi_state_read_file(&p->restart_library, path, msg, sizeof msg);
+    }
+    if (rc != 0) {
+        fsi_error("restart: %s", msg);
+        return -1;
+    }
+    p->restarting = 1;
+    return 0;
+}
+
+/* The library's own part of a restart, once the probes are declared. 0, or -1. */
+static int apply_restart(fsi_participant *p)
+{
+    const fsi_state *own = &p->restart_library;
+    if (fsi_state_get(own, "library.dt_prev", &p->dt_prev, sizeof p->dt_prev) == 0 &&
+        fsi_state_get(own, "library.probe_values", p->probe_values,
+                      (size_t)p->n_probes * sizeof(double)) == 0 &&
+        (!p->implicit_solid ||
+         fsi_accel_restore(p->implicit_solid->accel, own, "library.accel.") == 0))
+        return 0;
+    fsi_abort(p, "restart: the checkpoint's %s.library.state does not match this "
+              "participant (its probes or the coupling scheme differ from the run that wrote "
+              "it)", p->name);
+    return -1;
 }
 
 int fsi_requires_reading_checkpoint(const fsi_participant *p)
@@ -715,6 +842,7 @@ static int send_done(fsi_participant *p, int status, double dt_next_max, int n_s
     d.header.iteration = p->iteration;
     d.status = status;
     d.converged = -1;
+    d.checkpoint = p->checkpoint_written;
     if (p->implicit_solid && fsi_coupled(p) && status == FSI_STATUS_OK) {
         const implicit_verdict *v = &p->implicit_solid->verdict;
         d.converged = v->converged;
@@ -866,6 +994,8 @@ int fsi_close(fsi_participant *p, const fsi_timers *timers)
     if (p->implicit_solid)
         implicit_solid_free(p->implicit_solid);
     free(p->implicit_solid);
+    fsi_state_free(&p->restart);
+    fsi_state_free(&p->restart_library);
     for (int i = 0; i < p->n_probes; i++)
         free(p->probe_names[i]);
     free(p);

@@ -30,6 +30,7 @@
 #include <stdint.h>
 
 #include "case_file.h"
+#include "state_store.h"
 #include "timers.h"
 
 typedef struct fsi_participant fsi_participant;
@@ -107,8 +108,9 @@ int fsi_read_interface(fsi_participant *p, fsi_interface *data);
  * In an explicit run the two checkpoint calls are always 0, fsi_write_window_end does
  * nothing and fsi_window_complete is always 1, so one loop serves both. */
 int fsi_iteration(const fsi_participant *p);      /* sub-iteration of the window, 0.. */
-/* True at the first iteration of each window of an implicit run: save the state now,
- * before the exchange. */
+/* True at the first iteration of each window of an implicit run, and at the start of
+ * a window the coupler takes a coupled checkpoint at: save the state now, before the
+ * exchange, and hand it to fsi_write_checkpoint. */
 int fsi_requires_writing_checkpoint(const fsi_participant *p);
 /* True when the coupler repeats the window: restore the state saved at its start
  * before anything else. */
@@ -118,6 +120,15 @@ int fsi_requires_reading_checkpoint(const fsi_participant *p);
  * The library compares them with the motion the fluid was given and chooses the
  * motion of the next iteration (docs/coupling.md). 0, or -1 with a message. */
 int fsi_write_window_end(fsi_participant *p, const fsi_interface *end);
+/* Coupled checkpoints (fsi run --checkpoint-interval, docs/checkpoints.md): the state
+ * just saved, complete enough that a run restored from it goes on bit for bit as this
+ * one does. Written to the run's checkpoint folder when the coupler asked for one at
+ * this window's start; nothing otherwise. 0, or -1 with a message (then abort). */
+int fsi_write_checkpoint(fsi_participant *p, const fsi_state *st);
+/* The state to start from when the run is restarted from a checkpoint (fsi run
+ * --restart): restore it after setting up and before the first fsi_ongoing(); NULL in
+ * a run from the beginning. Owned by p. */
+const fsi_state *fsi_restart_state(const fsi_participant *p);
 /* After fsi_advance: 1 when the window is accepted and the run goes on from its end
  * (write its output now), 0 when the coupler repeats it. */
 int fsi_window_complete(const fsi_participant *p);

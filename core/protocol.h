@@ -7,7 +7,8 @@
  * docs/protocol.md): version 2 added impedance to fluid_load_t, version 3 added
  * density to solid_state_t, version 4 the implicit coupling's verdict to done_t
  * (converged, residuals, history) and repeated windows (step_t of the same window
- * with a higher header.iteration). */
+ * with a higher header.iteration), and coupled checkpoints (FSI_STEP_CHECKPOINT,
+ * done_t.checkpoint). */
 #define FSI_PROTOCOL_VERSION 4
 
 /* Message kinds; each travels on its own channel (fsi_msg_channel). */
@@ -27,7 +28,9 @@ typedef enum {
 /* step_t.flags */
 enum {
     FSI_STEP_PROBE = 1,   /* sample probes at the end of the window (sent in done_t) */
-    FSI_STEP_FINISH = 2   /* the run is over: send the final done_t with stats, then close */
+    FSI_STEP_FINISH = 2,  /* the run is over: send the final done_t with stats, then close */
+    FSI_STEP_CHECKPOINT = 4 /* write a coupled checkpoint of the state at this window's
+                             * start (docs/checkpoints.md) */
 };
 
 /* done_t.status */

@@ -15,6 +15,7 @@
 
 #include "bus.h"
 #include "case_file.h"
+#include "checkpoint_folder.h"
 #include "fsi_abort_t.h"
 #include "fsi_done_t.h"
 #include "fsi_heartbeat_t.h"
@@ -26,6 +27,7 @@
 #include "probes_csv.h"
 #include "progress.h"
 #include "request_timer.h"
+#include "state_file.h"
 #include "timers.h"
 #include "window_schedule.h"
 
@@ -47,6 +49,7 @@ typedef struct {
     int converged;
     double displacement_residual, force_residual;
     int history_columns, history_restarted;
+    int checkpoint;         /* its last done_t said it wrote its checkpoint part */
     int n_probes;
     char **probe_names;
     double *probe_values;
@@ -79,6 +82,14 @@ typedef struct {
     int implicit, min_iterations, max_iterations, stop_on_max_iterations;
     long iterations_total, windows_iterated, windows_not_converged;
     int iterations_most;
+    /* Coupled checkpoints (docs/checkpoints.md): every checkpoint_interval of simulated
+     * time, at the first frame time from next_checkpoint on, the state at the start of
+     * window checkpoint_window (-1: none being taken), the coupler's part in pending. */
+    double checkpoint_interval, next_checkpoint;
+    int checkpoint_window, frames_done;
+    fsi_state pending;
+    fsi_state restart;      /* the coupler's part of the checkpoint restarted from */
+    int restarting;
     double wall_start;
     /* Wall time from each grant to the last done_t: the cost of one coupling window. */
     double *window_wall;
@@ -196,6 +207,7 @@ static void take_done(coupler *c, participant_info *p, const fsi_done_t *d)
     p->force_residual = d->force_residual;
     p->history_columns = d->history_columns;
     p->history_restarted = d->history_restarted;
+    p->checkpoint = d->checkpoint;
     fsi_request_timer_arrived(&p->done_timer, fsi_wall_seconds(), fsi_bus_message_is_new(c->bus),
                               fsi_bus_measured_loss(c->bus));
     p->dt_proposed = d->dt_next_max;
@@ -345,7 +357,7 @@ static double smallest_proposal(const coupler *c)
     return fsi_window_smallest_proposal(proposals, c->n_part);
 }
 
-static int open_probes(coupler *c)
+static int open_probes(coupler *c, off_t resume_at)
 {
     int n = 0;
     for (int i = 0; i < c->n_part; i++)
@@ -355,7 +367,9 @@ static int open_probes(coupler *c)
     for (int i = 0; i < c->n_part; i++)
         for (int j = 0; j < c->part[i].n_probes; j++)
             names[k++] = c->part[i].probe_names[j];
-    int rc = fsi_probes_csv_open(&c->probes, c->env.out_dir, "probes.csv", n, names);
+    int rc = resume_at >= 0
+                 ? fsi_probes_csv_resume(&c->probes, c->env.out_dir, "probes.csv", n, resume_at)
+                 : fsi_probes_csv_open(&c->probes, c->env.out_dir, "probes.csv", n, names);
     free(names);
     if (rc != 0)
         fail(c, FSI_COUPLER_NAME, "%s", c->probes.error);
@@ -403,12 +417,15 @@ static const participant_info *solid_of(const coupler *c)
     return NULL;
 }
 
-static int open_coupling_csv(coupler *c)
+static int open_coupling_csv(coupler *c, off_t resume_at)
 {
     char *names[] = {"window", "iteration", "dt", "displacement_residual", "force_residual",
                      "converged", "history_columns", "history_restarted", "accepted"};
-    if (fsi_probes_csv_open(&c->coupling_csv, c->env.out_dir, "coupling.csv",
-                            (int)(sizeof names / sizeof names[0]), names) == 0)
+    const int n = (int)(sizeof names / sizeof names[0]);
+    if (resume_at >= 0 ? fsi_probes_csv_resume(&c->coupling_csv, c->env.out_dir, "coupling.csv",
+                                               n, resume_at) == 0
+                       : fsi_probes_csv_open(&c->coupling_csv, c->env.out_dir, "coupling.csv", n,
+                                             names) == 0)
         return 0;
     fail(c, FSI_COUPLER_NAME, "%s", c->coupling_csv.error);
     return -1;
@@ -465,6 +482,108 @@ static int judge_iteration(coupler *c, double dt)
     return verdict;
 }
 
+/* What the coupler needs to grant window 'window' again after a restart: the schedule
+ * after planning it, the plan, the counters, the output files' lengths. */
+typedef struct {
+    int window;
+    double t;
+    fsi_window_plan plan;
+    fsi_window_schedule sched;
+    off_t probes_committed, coupling_committed;
+    long iterations_total, windows_iterated, windows_not_converged;
+    int iterations_most, frames_done;
+    double next_checkpoint;
+} coupler_saved;
+
+static void participant_entry(char *out, size_t size, const participant_info *p,
+                              const char *what)
+{
+    snprintf(out, size, "coupler.%s.%s", p->name, what);
+}
+
+static int save_coupler(coupler *c, const fsi_window_plan *plan, const fsi_window_schedule *sched)
+{
+    const coupler_saved k = {c->window, c->t, *plan, *sched, c->probes.committed,
+                             c->coupling_csv.fd >= 0 ? c->coupling_csv.committed : -1,
+                             c->iterations_total, c->windows_iterated,
+                             c->windows_not_converged, c->iterations_most, c->frames_done,
+                             c->next_checkpoint};
+    fsi_state_clear(&c->pending);
+    int rc = fsi_state_put(&c->pending, "coupler.saved", &k, sizeof k);
+    for (int i = 0; i < c->n_part; i++) {
+        char name[64];
+        participant_entry(name, sizeof name, &c->part[i], "dt_proposed");
+        rc |= fsi_state_put(&c->pending, name, &c->part[i].dt_proposed, sizeof(double));
+        participant_entry(name, sizeof name, &c->part[i], "probe_values");
+        rc |= fsi_state_put(&c->pending, name, c->part[i].probe_values,
+                            (size_t)c->part[i].n_probes * sizeof(double));
+    }
+    if (rc == 0)
+        return 0;
+    fail(c, FSI_COUPLER_NAME, "out of memory for the checkpoint of window %d", c->window);
+    return -1;
+}
+
+static int restore_coupler(coupler *c, fsi_window_plan *plan, fsi_window_schedule *sched)
+{
+    coupler_saved k;
+    int rc = fsi_state_get(&c->restart, "coupler.saved", &k, sizeof k);
+    for (int i = 0; rc == 0 && i < c->n_part; i++) {
+        char name[64];
+        participant_entry(name, sizeof name, &c->part[i], "dt_proposed");
+        rc |= fsi_state_get(&c->restart, name, &c->part[i].dt_proposed, sizeof(double));
+        participant_entry(name, sizeof name, &c->part[i], "probe_values");
+        rc |= fsi_state_get(&c->restart, name, c->part[i].probe_values,
+                            (size_t)c->part[i].n_probes * sizeof(double));
+    }
+    if (rc != 0) {
+        fail(c, FSI_COUPLER_NAME, "restart: the checkpoint's coupler.state does not match "
+             "this case (its participants or probes differ)");
+        return -1;
+    }
+    c->window = k.window;
+    c->t = k.t;
+    *plan = k.plan;
+    *sched = k.sched;
+    c->iterations_total = k.iterations_total;
+    c->windows_iterated = k.windows_iterated;
+    c->windows_not_converged = k.windows_not_converged;
+    c->iterations_most = k.iterations_most;
+    c->frames_done = k.frames_done;
+    c->next_checkpoint = k.next_checkpoint;
+    if (open_probes(c, k.probes_committed) != 0 ||
+        (c->implicit && open_coupling_csv(c, k.coupling_committed) != 0))
+        return -1;
+    fsi_info("restarted at window %d, t = %.9g s", c->window, c->t);
+    return 0;
+}
+
+/* The checkpoint of the current window's start, once everyone reported its part: the
+ * coupler's own, then COMPLETE. */
+static int finish_checkpoint(coupler *c)
+{
+    for (int i = 0; i < c->n_part; i++)
+        if (!c->part[i].checkpoint) {
+            fail(c, c->part[i].name, "participant '%s' did not write its part of the "
+                 "checkpoint at window %d (t = %.9g s): a program that does not call "
+                 "fsi_write_checkpoint cannot run with --checkpoint-interval",
+                 c->part[i].name, c->window, c->t);
+            return -1;
+        }
+    char dir[4300], path[4400], msg[4600];
+    fsi_checkpoint_dir(c->env.out_dir, c->window, dir, sizeof dir);
+    snprintf(path, sizeof path, "%s/coupler.state", dir);
+    if (fsi_state_write_file(&c->pending, path, msg, sizeof msg) != 0 ||
+        fsi_checkpoint_complete(c->env.out_dir, c->window, c->t, c->frames_done, 2, msg,
+                                sizeof msg) != 0) {
+        fail(c, FSI_COUPLER_NAME, "checkpoint at window %d: %s", c->window, msg);
+        return -1;
+    }
+    fsi_info("checkpoint at window %d, t = %.9g s: %s", c->window, c->t, dir);
+    c->checkpoint_window = -1;
+    return 0;
+}
+
 static int run_windows(coupler *c)
 {
     double t_end = fsi_case_get_real(c->case_file, "run", "end_time", 0.0);
@@ -473,21 +592,27 @@ static int run_windows(coupler *c)
                              fsi_case_get_real(c->case_file, "run", "output_interval", 0.01),
                              fsi_case_get_real(c->case_file, "run", "probe_interval", 1e-3),
                              fsi_case_get_real(c->case_file, "run", "max_window", 1e-3));
-    if (open_probes(c) != 0 || (c->implicit && open_coupling_csv(c) != 0))
-        return -1;
-
     /* Window 0 has zero length: everyone exchanges, writes frame 0 and samples probes
      * at t = 0, so the first output and the first probe row describe the initial state. */
     c->window = 0;
     c->iteration = 0;
     c->t = 0.0;
     fsi_window_plan plan = {0.0, 0.0, 0, 1, 0};
+    c->checkpoint_window = -1;
+    c->next_checkpoint = c->checkpoint_interval;
+    if (c->restarting ? restore_coupler(c, &plan, &sched) != 0
+                      : open_probes(c, -1) != 0 || (c->implicit && open_coupling_csv(c, -1) != 0))
+        return -1;
     double granted = 0.0;
     for (;;) {
         if (c->iteration == 0)
             granted = fsi_wall_seconds();
-        publish_step(c, plan.dt, plan.probe ? FSI_STEP_PROBE : 0, plan.frame);
+        const int checkpoint = c->iteration == 0 && c->window == c->checkpoint_window;
+        publish_step(c, plan.dt, (plan.probe ? FSI_STEP_PROBE : 0) |
+                                     (checkpoint ? FSI_STEP_CHECKPOINT : 0), plan.frame);
         if (wait_for_done(c) != 0)
+            return -1;
+        if (checkpoint && finish_checkpoint(c) != 0)
             return -1;
         const int verdict = judge_iteration(c, plan.dt);
         if (verdict < 0)
@@ -505,8 +630,20 @@ static int run_windows(coupler *c)
         fsi_progress_update(&c->progress, c->t, c->window, 0);
         if (plan.last)
             break;
+        /* A checkpoint at the first frame time from each multiple of the interval on:
+         * the output then restarts at a frame. */
+        const int checkpoint_next = c->checkpoint_interval > 0 && plan.frame >= 0 &&
+                                    c->t >= c->next_checkpoint * (1.0 - 1e-12);
+        if (plan.frame >= 0)
+            c->frames_done = plan.frame + 1;
         plan = fsi_window_schedule_next(&sched, c->t, smallest_proposal(c));
         c->window++;
+        if (checkpoint_next) {
+            c->next_checkpoint = c->checkpoint_interval * (floor(c->t / c->checkpoint_interval + 1e-9) + 1.0);
+            c->checkpoint_window = c->window;
+            if (save_coupler(c, &plan, &sched) != 0)
+                return -1;
+        }
     }
     /* The finishing window: no time advance, everyone sends its final report. */
     c->window++;
@@ -626,6 +763,17 @@ static int setup(coupler *c)
     c->stop_on_max_iterations =
         !fsi_case_choice_is(c->case_file, "run", "coupling_on_max_iterations", "continue");
     c->coupling_csv.fd = -1;
+    c->checkpoint_interval = fsi_case_get_real(c->case_file, "run", "checkpoint_interval", 0.0);
+    const char *restart = getenv("FSI_RESTART_DIR");
+    if (restart && *restart) {
+        char path[4400], msg[4600];
+        snprintf(path, sizeof path, "%s/coupler.state", restart);
+        if (fsi_state_read_file(&c->restart, path, msg, sizeof msg) != 0) {
+            fsi_error("restart: %s", msg);
+            return -1;
+        }
+        c->restarting = 1;
+    }
     for (int r = 0; r < MAX_PARTICIPANTS; r++) {
         if (!fsi_case_has_section(c->case_file, roles[r]))
             continue;
@@ -651,6 +799,8 @@ static void teardown(coupler *c)
 {
     fsi_probes_csv_close(&c->probes);
     fsi_probes_csv_close(&c->coupling_csv);
+    fsi_state_free(&c->pending);
+    fsi_state_free(&c->restart);
     fsi_bus_close(c->bus);
     free(c->window_wall);
     for (int i = 0; i < c->n_part; i++) {

@@ -7,6 +7,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 /* Appends one complete line, or nothing: a partial write is truncated away. */
@@ -67,6 +68,34 @@ int fsi_probes_csv_open(fsi_probes_csv *csv, const char *dir, const char *file, 
     int rc = write_line(csv, line, at);
     free(line);
     return rc;
+}
+
+int fsi_probes_csv_resume(fsi_probes_csv *csv, const char *dir, const char *file,
+                          int n_columns, off_t committed)
+{
+    csv->n_columns = n_columns;
+    csv->committed = committed;
+    csv->error[0] = '\0';
+    snprintf(csv->path, sizeof csv->path, "%s/%s", dir, file);
+    csv->fd = open(csv->path, O_WRONLY | O_CLOEXEC);
+    struct stat st;
+    if (csv->fd < 0 || fstat(csv->fd, &st) != 0) {
+        snprintf(csv->error, sizeof csv->error, "cannot reopen %s: %s", csv->path,
+                 strerror(errno));
+        return -1;
+    }
+    if (st.st_size < committed) {
+        snprintf(csv->error, sizeof csv->error, "%s holds %lld bytes, fewer than the %lld the "
+                 "checkpoint counted: it is not this run's", csv->path, (long long)st.st_size,
+                 (long long)committed);
+        return -1;
+    }
+    if (ftruncate(csv->fd, committed) != 0 || lseek(csv->fd, committed, SEEK_SET) < 0) {
+        snprintf(csv->error, sizeof csv->error, "cannot cut %s back to the checkpoint: %s",
+                 csv->path, strerror(errno));
+        return -1;
+    }
+    return 0;
 }
 
 int fsi_probes_csv_row(fsi_probes_csv *csv, double time, const double *values)

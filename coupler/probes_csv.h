@@ -17,6 +17,11 @@ typedef struct {
 /* Opens DIR/FILE and writes the header; returns 0 or -1 (message in error). */
 int fsi_probes_csv_open(fsi_probes_csv *csv, const char *dir, const char *file, int n_columns,
                         char *const *column_names);
+/* Reopens DIR/FILE of a restarted run (docs/checkpoints.md): cut back to its first
+ * 'committed' bytes, the complete rows of the run up to the checkpoint, and written
+ * on from there. 0, or -1 (message in error; also when the file is shorter). */
+int fsi_probes_csv_resume(fsi_probes_csv *csv, const char *dir, const char *file,
+                          int n_columns, off_t committed);
 /* values[n_columns], printed exactly (%.17g) so runs compare bit for bit. Returns 0,
  * or -1 with csv->error set when the row could not be written (the file then still
  * ends at the previous row). */

@@ -63,6 +63,11 @@ static const fsi_key_spec run_keys[] = {
     {"output_interval", FSI_KEY_REAL, "s", "0.01", FSI_BOUND_MIN_OPEN, 0, 0, NULL,
      "Simulated time between output frames; windows end exactly on frame times so fluid "
      "and solid frames line up."},
+    {"checkpoint_interval", FSI_KEY_REAL, "s", "0", FSI_BOUND_MIN, 0, 0, NULL,
+     "Simulated time between coupled checkpoints of the coupler and every participant "
+     "(fsi run --checkpoint-interval sets it), each taken at the first output frame time from "
+     "a multiple of it on; fsi run --restart OUT goes on from the newest complete one "
+     "(docs/checkpoints.md). 0: none."},
     {"probe_interval", FSI_KEY_REAL, "s", "1e-3", FSI_BOUND_MIN, 0, 0, NULL,
      "Simulated time between rows of probes.csv; 0 writes a row after every window."},
     {"heartbeat_interval", FSI_KEY_REAL, "s", "0.25", FSI_BOUND_MIN_OPEN | FSI_BOUND_MAX, 0,

@@ -20,6 +20,7 @@
  * and nothing else. */
 static const char *const run_files[] = {
     "case.resolved.ini", "run.log", "probes.csv",     /* fsi run, the coupler */
+    "coupling.csv",                                   /* implicit coupling */
     "traffic.lcmlog", "traffic.log",                  /* fsi run --log-traffic */
     "replay.log",                                     /* fsi replay */
     "c1_elastic_plate.png", "c1_elastic_plate.md",    /* fsi main (launch/fsi) */
@@ -117,6 +118,36 @@ static int remove_frames(const char *dir, const char *name, const char *command)
     return rc;
 }
 
+/* OUT/checkpoints/: its window_K/ folders and what they hold (docs/checkpoints.md). */
+static int remove_checkpoints(const char *dir, const char *command)
+{
+    DIR *d = opendir(dir);
+    if (!d)
+        return 0;
+    int rc = 0;
+    char path[PATH_MAX + 512];
+    struct dirent *e;
+    while ((e = readdir(d))) {
+        if (strncmp(e->d_name, "window_", 7) != 0)
+            continue;
+        snprintf(path, sizeof path, "%s/%s", dir, e->d_name);
+        DIR *w = opendir(path);
+        struct dirent *f;
+        char file[PATH_MAX + 1024];
+        while (w && (f = readdir(w)))
+            if (f->d_name[0] != '.') {
+                snprintf(file, sizeof file, "%s/%s", path, f->d_name);
+                rc |= remove_file(file, command);
+            }
+        if (w)
+            closedir(w);
+        rmdir(path);
+    }
+    closedir(d);
+    rmdir(dir);
+    return rc;
+}
+
 static int remove_results(const char *dir, const char *command)
 {
     DIR *d = opendir(dir);
@@ -131,6 +162,8 @@ static int remove_results(const char *dir, const char *command)
             rc |= remove_file(path, command);
         else if (is_role_with(e->d_name, frames_suffix))
             rc |= remove_frames(dir, e->d_name, command);
+        else if (strcmp(e->d_name, "checkpoints") == 0)
+            rc |= remove_checkpoints(path, command);
     }
     closedir(d);
     return rc;
@@ -239,7 +272,7 @@ int fsi_claim_output_dir(const char *dir, int force, const char *command)
         fd = take_lock(dir, 0, command);
         if (fd == -1)
             return -1;
-        if (!force && refuse_earlier_results(dir, command) != 0)
+        if (force == FSI_CLAIM_REFUSE && refuse_earlier_results(dir, command) != 0)
             goto refused;
     } else if (make_dirs(dir) != 0) {
         fprintf(stderr, "%s: cannot create the output folder %s: %s\n", command, dir,
@@ -251,10 +284,10 @@ int fsi_claim_output_dir(const char *dir, int force, const char *command)
         if (fd < 0)
             return -1;
         /* Checked again under the lock: a run may have come and gone meanwhile. */
-        if (!force && refuse_earlier_results(dir, command) != 0)
+        if (force == FSI_CLAIM_REFUSE && refuse_earlier_results(dir, command) != 0)
             goto refused;
     }
-    if (force && remove_results(dir, command) != 0)
+    if (force == FSI_CLAIM_REPLACE && remove_results(dir, command) != 0)
         goto refused;
     write_pid(fd);
     return fd;

@@ -19,4 +19,8 @@
  * processes of the run never hold the lock after their supervisor is gone. */
 int fsi_claim_output_dir(const char *dir, int force, const char *command);
 
+/* The values of 'force': refuse earlier results, replace them (--force), or keep them
+ * (fsi run --restart goes on with them). */
+enum { FSI_CLAIM_REFUSE = 0, FSI_CLAIM_REPLACE = 1, FSI_CLAIM_KEEP = 2 };
+
 #endif

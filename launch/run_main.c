@@ -21,6 +21,7 @@
 #include <unistd.h>
 
 #include "case_file.h"
+#include "checkpoint_folder.h"
 #include "log.h"
 #include "output_folder.h"
 #include "private_network.h"
@@ -36,6 +37,8 @@ typedef struct {
     int log_traffic;
     const char *lcm_url;   /* NULL: private namespace with the default URL */
     int check_only;
+    const char *restart;        /* --restart OUT */
+    char checkpoint_set[96];    /* --checkpoint-interval T as run.checkpoint_interval=T */
 } run_options;
 
 static volatile int interrupted;
@@ -45,13 +48,20 @@ static void usage(FILE *out)
     fprintf(out,
             "usage: fsi run CASE [--out DIR] [--set section.key=value ...] [--threads N]\n"
             "               [--log-traffic] [--lcm-url URL] [--force] [--check]\n"
+            "               [--checkpoint-interval T]\n"
+            "       fsi run --restart OUT [--threads N] [--log-traffic] [--lcm-url URL]\n"
             "  --out DIR         output folder (default: out/<case name>)\n"
             "  --set s.k=v       override a case key (repeatable)\n"
             "  --threads N       OpenMP threads of every participant\n"
             "  --log-traffic     record every bus message to DIR/traffic.lcmlog\n"
             "  --lcm-url URL     use this LCM network instead of a private namespace\n"
             "  --force           replace the results of an earlier run in DIR\n"
-            "  --check           only check the case, run nothing\n");
+            "  --check           only check the case, run nothing\n"
+            "  --checkpoint-interval T\n"
+            "                    a coupled checkpoint every T of simulated time (at the\n"
+            "                    first frame time from each multiple of T on)\n"
+            "  --restart OUT     go on with the run in OUT from its newest complete\n"
+            "                    checkpoint (docs/checkpoints.md)\n");
 }
 
 static int parse_options(int argc, char **argv, run_options *o)
@@ -70,7 +80,24 @@ static int parse_options(int argc, char **argv, run_options *o)
             o->lcm_url = argv[++i];
         else if (strcmp(a, "--check") == 0)
             o->check_only = 1;
-        else if (strcmp(a, "-h") == 0 || strcmp(a, "--help") == 0) {
+        else if (strcmp(a, "--restart") == 0 && has_value)
+            o->restart = argv[++i];
+        else if (strcmp(a, "--checkpoint-interval") == 0 && has_value) {
+            char *end;
+            const double t = strtod(argv[++i], &end);
+            if (*end || !(t > 0.0)) {
+                fprintf(stderr, "fsi run: --checkpoint-interval needs a time > 0 in seconds, "
+                                "not '%s'\n", argv[i]);
+                return -1;
+            }
+            if (o->common.n_sets >= FSI_MAX_SETS) {
+                fprintf(stderr, "fsi run: too many --set options\n");
+                return -1;
+            }
+            snprintf(o->checkpoint_set, sizeof o->checkpoint_set,
+                     "run.checkpoint_interval=%.17g", t);
+            o->common.sets[o->common.n_sets++] = o->checkpoint_set;
+        } else if (strcmp(a, "-h") == 0 || strcmp(a, "--help") == 0) {
             usage(stdout);
             exit(FSI_EXIT_OK);
         } else if (a[0] != '-' && !o->case_path)
@@ -81,10 +108,48 @@ static int parse_options(int argc, char **argv, run_options *o)
             return -1;
         }
     }
+    if (o->restart) {
+        /* The run goes on with its own resolved case: nothing about it may change. */
+        if (o->case_path || o->common.n_sets > 0 || o->common.out_dir || o->common.force ||
+            o->check_only) {
+            fprintf(stderr, "fsi run: --restart OUT takes the case, the output folder and "
+                            "the checkpoint interval from OUT; give none of CASE, --out, "
+                            "--set, --checkpoint-interval, --force or --check with it\n");
+            return -1;
+        }
+        static char resolved[PATH_MAX + 32];
+        snprintf(resolved, sizeof resolved, "%s/case.resolved.ini", o->restart);
+        o->case_path = resolved;
+        o->common.out_dir = o->restart;
+    }
     if (!o->case_path) {
         usage(stderr);
         return -1;
     }
+    return 0;
+}
+
+/* The newest complete checkpoint of OUT for --restart, written by this very code
+ * version; sets FSI_RESTART_DIR and FSI_RESTART_FRAMES for every process. 0, or -1
+ * with a message. */
+static int prepare_restart(const char *out, fsi_checkpoint_info *info)
+{
+    char msg[4600];
+    if (fsi_checkpoint_latest(out, info, msg, sizeof msg) != 0) {
+        fprintf(stderr, "fsi run: --restart: %s\n", msg);
+        return -1;
+    }
+    if (strcmp(info->version, FSI_VERSION) != 0) {
+        fprintf(stderr, "fsi run: --restart: %s/COMPLETE: the checkpoint was written by "
+                        "version %s of the code, this is %s; a checkpoint restarts only the "
+                        "build that wrote it\n", info->dir, info->version, FSI_VERSION);
+        return -1;
+    }
+    static char env_dir[4400], env_frames[64];
+    snprintf(env_dir, sizeof env_dir, "FSI_RESTART_DIR=%s", info->dir);
+    snprintf(env_frames, sizeof env_frames, "FSI_RESTART_FRAMES=%d", info->frames);
+    putenv(env_dir);
+    putenv(env_frames);
     return 0;
 }
 
@@ -327,7 +392,7 @@ int main(int argc, char **argv)
     else
         default_out_dir(o.case_path, out, sizeof out);
     /* Held until this process ends, through the namespace steps and the run. */
-    int lock = fsi_claim_output_dir(out, o.common.force, "fsi run");
+    int lock = fsi_claim_output_dir(out, o.restart ? FSI_CLAIM_KEEP : o.common.force, "fsi run");
     if (lock < 0) {
         fsi_case_free(c);
         return FSI_EXIT_BAD_INPUT;
@@ -339,22 +404,33 @@ int main(int argc, char **argv)
         return FSI_EXIT_BAD_INPUT;
     }
 
-    snprintf(path, sizeof path, "%s/case.resolved.ini", out_abs);
-    FILE *resolved = fopen(path, "w");
-    if (!resolved) {
-        fprintf(stderr, "fsi run: cannot write %s\n", path);
+    fsi_checkpoint_info restart;
+    if (o.restart && prepare_restart(out_abs, &restart) != 0) {
         fsi_case_free(c);
-        return FSI_EXIT_RUN_FAILURE;
+        return FSI_EXIT_BAD_INPUT;
     }
-    fsi_case_write_resolved(c, resolved);
-    fclose(resolved);
+    snprintf(path, sizeof path, "%s/case.resolved.ini", out_abs);
+    if (!o.restart) {
+        FILE *resolved = fopen(path, "w");
+        if (!resolved) {
+            fprintf(stderr, "fsi run: cannot write %s\n", path);
+            fsi_case_free(c);
+            return FSI_EXIT_RUN_FAILURE;
+        }
+        fsi_case_write_resolved(c, resolved);
+        fclose(resolved);
+    }
 
     int isolated = o.lcm_url == NULL;
     const char *url = isolated ? FSI_DEFAULT_LCM_URL : o.lcm_url;
     int64_t run_id = new_run_id();
     char log_path[PATH_MAX + 32];
     snprintf(log_path, sizeof log_path, "%s/run.log", out_abs);
-    int header = write_log_header(log_path, argc, argv, run_id, url, isolated, c);
+    int header = o.restart
+                     ? append_log(log_path, "\n# restart from %s (window %d, t = %.9g s), run_id "
+                                  "= %lld\n", restart.dir, restart.window, restart.time,
+                                  (long long)run_id)
+                     : write_log_header(log_path, argc, argv, run_id, url, isolated, c);
     fsi_case_free(c);
     if (header != 0)
         return FSI_EXIT_RUN_FAILURE;

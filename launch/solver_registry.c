@@ -20,6 +20,12 @@ static const fsi_key_spec participant_keys[] = {
      "program of your own that speaks the protocol (docs/participant_api.md)."},
     {"executable", FSI_KEY_STRING, "-", "", 0, 0, 0, NULL,
      "Program to start for solver = external (a path); ignored otherwise."},
+    {"checkpoints", FSI_KEY_BOOL, "-", "false", 0, 0, 0, NULL,
+     "For solver = external: the program saves and restores its state when the library "
+     "asks (fsi_requires_writing_checkpoint, fsi_write_checkpoint, fsi_restart_state; "
+     "docs/checkpoints.md), which [run] scheme = implicit and checkpoint_interval need; a "
+     "case that needs it of a program that does not say so is refused. The project's "
+     "solvers all do; ignored for them."},
     {"threads", FSI_KEY_INT, "-", "1", FSI_BOUND_MIN, 1, 0, NULL,
      "OpenMP threads of this participant (`fsi run --threads N` overrides it)."},
 };

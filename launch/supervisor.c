@@ -47,7 +47,10 @@ int fsi_supervisor_start(fsi_supervisor *s, const char *name, const char *progra
         for (int i = 0; extra_env && extra_env[i]; i++)
             putenv(extra_env[i]);
         if (log_path) {
-            int fd = open(log_path, O_WRONLY | O_CREAT | O_TRUNC, 0644);
+            /* A restarted run (FSI_RESTART_DIR) goes on with the logs of its start. */
+            const char *restart = getenv("FSI_RESTART_DIR");
+            int fd = open(log_path, O_WRONLY | O_CREAT | (restart && *restart ? O_APPEND : O_TRUNC),
+                          0644);
             if (fd >= 0) {
                 dup2(fd, STDOUT_FILENO);
                 dup2(fd, STDERR_FILENO);

@@ -455,6 +455,52 @@ static void invalid_settings(void)
     CHECK(fsi_accel_create(&bad[5], NULL, 0) == NULL, "invalid settings without msg accepted");
 }
 
+/* A checkpoint (fsi_accel_save / fsi_accel_restore, docs/checkpoints.md): an IQN-ILS
+ * acceleration saved after 6 windows of the sequence and restored into a new one goes
+ * on bit for bit as the saved one does (same iterations, same x, memcmp). */
+static void save_restore(void)
+{
+    model p;
+    model_init(&p, N, 0.0);
+    double b0[M_MAX], x[M_MAX] = {0}, x_saved[M_MAX];
+    memcpy(b0, p.b, sizeof b0);
+    fsi_accel *a = make(FSI_ACCEL_IQN_ILS, 0.2, 8, 40);
+    fsi_state st = {0};
+    int its_a[12], its_b[12];
+    for (int k = 0; k < 12; k++) {
+        if (k == 6) {
+            CHECK(fsi_accel_save(a, &st, "accel.") == 0, "fsi_accel_save");
+            memcpy(x_saved, x, sizeof x);
+        }
+        for (int i = 0; i < p.m; i++)
+            p.b[i] = b0[i] * (1.0 + 0.01 * k);
+        fsi_accel_begin_window(a, N, NCOMP, ids);
+        its_a[k] = window(a, &p, x, 500, NULL);
+    }
+    double x_a[M_MAX];
+    memcpy(x_a, x, sizeof x);
+    fsi_accel *b = make(FSI_ACCEL_IQN_ILS, 0.2, 8, 40);
+    CHECK(fsi_accel_restore(b, &st, "accel.") == 0, "fsi_accel_restore");
+    memcpy(x, x_saved, sizeof x);
+    int same = 1;
+    for (int k = 6; k < 12; k++) {
+        for (int i = 0; i < p.m; i++)
+            p.b[i] = b0[i] * (1.0 + 0.01 * k);
+        fsi_accel_begin_window(b, N, NCOMP, ids);
+        its_b[k] = window(b, &p, x, 500, NULL);
+        same &= its_b[k] == its_a[k];
+    }
+    CHECK(same, "the restored acceleration takes the same iterations per window");
+    CHECK(memcmp(x, x_a, (size_t)p.m * sizeof *x) == 0,
+          "the restored acceleration ends bit for bit where the saved one did");
+    CHECK(fsi_accel_restore(b, &(fsi_state){0}, "accel.") != 0,
+          "restoring from an empty state is refused");
+    fsi_state_free(&st);
+    fsi_accel_free(a);
+    fsi_accel_free(b);
+    memcpy(p.b, b0, sizeof b0);
+}
+
 int main(void)
 {
     rng_state = 20240611;
@@ -466,5 +512,6 @@ int main(void)
     filter();
     interface_changes();
     invalid_settings();
+    save_restore();
     return unit_check_report("test_coupling_acceleration");
 }
