@@ -2,7 +2,12 @@
  * particle, each loaded by whatever the fluid returns. Small enough to read in one
  * sitting; docs/participant_api.md walks through it. With the linear_dashpot fluid,
  * particle i obeys m u'' + c u' + (k_i + k_f) u = 0, which bench/ and the tests
- * compare against the closed-form solution. */
+ * compare against the closed-form solution.
+ *
+ * It also shows what implicit coupling asks of a solid (core/participant.h): save the
+ * state at a window's first iteration, restore it when the coupler repeats the window,
+ * report the positions at the window's end, and write output only once the window is
+ * accepted. In an explicit run none of that does anything. */
 #include <float.h>
 #include <math.h>
 #include <stdio.h>
@@ -13,6 +18,7 @@
 #include "h5_output.h"
 #include "log.h"
 #include "participant.h"
+#include "state_store.h"
 
 typedef struct {
     int n;
@@ -60,6 +66,25 @@ static int springs_init(springs *s, const fsi_case *c)
         AY(s, i) = -s->stiffness[i] * u0 / s->mass;
     }
     return 0;
+}
+
+/* The state a repeated window starts from: positions, velocities and accelerations
+ * (the load is set anew from the fluid's answer in every window). */
+static int springs_save(const springs *s, fsi_state *st)
+{
+    const size_t v = (size_t)s->n * FSI_DIM * sizeof(double);
+    fsi_state_clear(st);
+    return fsi_state_put(st, "position", s->position, v) |
+           fsi_state_put(st, "velocity", s->velocity, v) |
+           fsi_state_put(st, "acceleration", s->acceleration, v);
+}
+
+static int springs_restore(springs *s, const fsi_state *st)
+{
+    const size_t v = (size_t)s->n * FSI_DIM * sizeof(double);
+    return fsi_state_get(st, "position", s->position, v) |
+           fsi_state_get(st, "velocity", s->velocity, v) |
+           fsi_state_get(st, "acceleration", s->acceleration, v);
 }
 
 static void springs_free(springs *s)
@@ -148,9 +173,18 @@ int main(void)
                            .velocity = s.velocity, .acceleration = s.acceleration,
                            .volume = s.volume, .density = s.density};
     fsi_interface loads;
+    /* Every particle is sent in every window, so the window's end is the same ids with
+     * their positions at t_k + dt. */
+    const fsi_interface end = {.n = s.n, .id = s.id, .position = s.position};
+    fsi_state saved = {0};
 
     while (fsi_ongoing(p)) {
         double dt = fsi_window(p);
+        if ((fsi_requires_reading_checkpoint(p) && springs_restore(&s, &saved) != 0) ||
+            (fsi_requires_writing_checkpoint(p) && springs_save(&s, &saved) != 0)) {
+            fsi_abort(p, "cannot save or restore the state of window %d", fsi_window_index(p));
+            break;
+        }
         if (fsi_write_interface(p, &state) != 0) {
             fsi_abort(p, "cannot publish the state of window %d", fsi_window_index(p));
             break;
@@ -170,19 +204,25 @@ int main(void)
         }
         fsi_set_probe(p, probe_uy, UY(&s, 0));
         fsi_set_probe(p, probe_vy, VY(&s, 0));
-        if (fsi_output_frame(p) >= 0) {
+        if (fsi_write_window_end(p, &end) != 0) {
+            fsi_abort(p, "cannot send the positions at the end of window %d",
+                      fsi_window_index(p));
+            break;
+        }
+        const int frame = fsi_output_frame(p), window = fsi_window_index(p);
+        const double t_end = fsi_time(p) + dt;
+        fsi_advance(p, DBL_MAX);    /* sub-cycling: the solid never limits the window */
+        if (frame >= 0 && fsi_window_complete(p)) {     /* the window is accepted */
             fsi_timer_start(&timers, t_output);
-            int rc = write_frame(out, &s, fsi_output_frame(p), fsi_time(p) + dt,
-                                 fsi_window_index(p));
+            int rc = write_frame(out, &s, frame, t_end, window);
             fsi_timer_stop(&timers, t_output);
             if (rc != 0) {
-                fsi_abort(p, "cannot write output frame %d: %s", fsi_output_frame(p),
-                          fsi_h5_last_error());
+                fsi_abort(p, "cannot write output frame %d: %s", frame, fsi_h5_last_error());
                 break;
             }
         }
-        fsi_advance(p, DBL_MAX);    /* sub-cycling: the solid never limits the window */
     }
+    fsi_state_free(&saved);
     fsi_h5_close(out);
     springs_free(&s);
     return fsi_close(p, &timers);

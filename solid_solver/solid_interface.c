@@ -24,9 +24,11 @@ int solid_interface_init(solid_interface_buffers *b, int n_particles)
     b->state.density = malloc(n * sizeof(double));
     b->x_window = malloc(v * sizeof(double));
     b->v_mean = calloc(v, sizeof(double));   /* read (times 0) before a first gather */
+    b->u_fluid = calloc(v, sizeof(double));
+    b->end_position = malloc(v * sizeof(double));
     if (!b->surface || !b->band || !b->received || !b->state.id || !b->state.position ||
         !b->state.velocity || !b->state.acceleration || !b->state.volume ||
-        !b->state.density || !b->x_window || !b->v_mean) {
+        !b->state.density || !b->x_window || !b->v_mean || !b->u_fluid || !b->end_position) {
         solid_interface_free(b);
         return -1;
     }
@@ -49,6 +51,8 @@ void solid_interface_free(solid_interface_buffers *b)
     free(b->state.density);
     free(b->x_window);
     free(b->v_mean);
+    free(b->u_fluid);
+    free(b->end_position);
     memset(b, 0, sizeof *b);
 }
 
@@ -156,6 +160,8 @@ int solid_interface_take(solid_interface_buffers *b, const fsi_interface *in,
     if (pressure)
         memset(pressure, 0, (size_t)p->n * sizeof *pressure);
     memset(b->received, 0, (size_t)b->capacity);
+    const int n_all = p->n < b->capacity ? p->n : b->capacity;
+    memcpy(b->u_fluid, b->v_mean, (size_t)n_all * FSI_DIM * sizeof *b->u_fluid);
     if (in->n <= 0)
         return 0;
     if (!in->id || !in->force) {
@@ -188,10 +194,28 @@ int solid_interface_take(solid_interface_buffers *b, const fsi_interface *in,
             }
             force[id * FSI_DIM + d] = f;
         }
+        for (int d = 0; in->velocity && d < FSI_DIM; d++) {
+            double u = in->velocity[j * FSI_DIM + d];
+            if (!isfinite(u)) {
+                snprintf(msg, msg_size, "the velocity the fluid moved particle id %d with "
+                         "is not finite", (int)id);
+                return -1;
+            }
+            b->u_fluid[id * FSI_DIM + d] = u;
+        }
         if (pressure && in->pressure)
             pressure[id] = in->pressure[j];
     }
     return 0;
+}
+
+void solid_interface_window_end(solid_interface_buffers *b, const solid_particles *p,
+                                fsi_interface *end)
+{
+    for (int j = 0; j < b->state.n; j++)
+        for (int d = 0; d < FSI_DIM; d++)
+            b->end_position[j * FSI_DIM + d] = p->x[b->state.id[j] * FSI_DIM + d];
+    *end = (fsi_interface){.n = b->state.n, .id = b->state.id, .position = b->end_position};
 }
 
 void solid_interface_damping(const solid_interface_buffers *b, const solid_particles *p,

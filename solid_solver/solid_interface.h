@@ -33,6 +33,13 @@ typedef struct {
      * window's start and its mean velocity over the window before, FSI_DIM each. */
     double *x_window, *v_mean;
     int have_x_window;          /* x_window holds a gather's positions */
+    /* Per particle, FSI_DIM each (solid_interface_take): the window-mean velocity the
+     * fluid moved it with over this window, the reference u of the impedance term
+     * (solid_interface_damping): what the library hands back with the loads, or v_mean
+     * when it hands back none. */
+    double *u_fluid;
+    double *end_position;       /* the sent particles' positions at the window's end
+                                 * (solid_interface_window_end), FSI_DIM each */
     double dt_mean;             /* the window v_mean is over [s]; 0: no mean yet */
     double density_min, density_max;    /* the density sent, least and greatest over
                                          * every particle of every gather [kg/m^3]
@@ -84,15 +91,27 @@ int solid_interface_gather(solid_interface_buffers *b, const solid_particles *p,
                            const double *density, double dt_last);
 
 /* Takes the fluid's loads: force (n_particles * FSI_DIM) and pressure (n_particles)
- * are zeroed, then set for every id in 'in'. Returns 0, or -1 with a message naming
- * the first offending id. */
+ * are zeroed, then set for every id in 'in'. b->u_fluid gets, for every id in 'in',
+ * in->velocity's entry (the same order as in->id: the window-mean velocity the fluid
+ * moved the particle with, the one sent in an explicit run) when in->velocity is not
+ * NULL, else b->v_mean's, as every particle without a load does. Returns 0, or -1
+ * with a message naming the first offending id. */
 int solid_interface_take(solid_interface_buffers *b, const fsi_interface *in,
                          const solid_particles *p, double *force, double *pressure, char *msg,
                          size_t msg_size);
 
+/* The positions at the window's end (now, t_k + dt) of exactly the particles the
+ * last gather put into b->state, same ids in the same order, for
+ * fsi_write_window_end: end gets n and id (b->state's) and position
+ * (b->end_position); its other fields are NULL. */
+void solid_interface_window_end(solid_interface_buffers *b, const solid_particles *p,
+                                fsi_interface *end);
+
 /* The fluid's answer within a window (docs/coupling.md). The fluid's load F_k is held
  * over the window while the solid sub-cycles, computed for the motion the solid sent,
- * at the mean velocity u = v_mean of the last window (and the mean acceleration, whose
+ * at the mean velocity u of the window (b->u_fluid: the v_mean of the last window
+ * that the solid sent, or the iteration's motion of an implicit run; and the mean
+ * acceleration, whose
  * small part a_mean (t - t_k) is left out here: with one sub-step per window it is a
  * second difference of positions, and fed back through z it pumped the solid's
  * fastest mode). Where the solid departs from that motion the fluid would have pushed

@@ -5,12 +5,15 @@
  *
  *   setup   geometry (blocks, regions) -> particles, material density, the model,
  *           prescribed loads, initial velocity, probes, output file
- *   window  publish the surface state at t_k, read the fluid's loads (held over the
+ *   window  restore the state saved at the window's start when the coupler repeats
+ *           the window, save it at a window's first iteration (implicit coupling),
+ *           publish the surface state at t_k, read the fluid's loads (held over the
  *           window, serial-staggered), sub-cycle the integrator (velocity Verlet, 000
  *           Eq. 55, or RK4, 003 Eqs. 43-45, for models that allow trial evaluations)
  *           in n = ceil(window / (safety * stable step)) equal sub-steps, check health
- *           after every sub-step and the energy after every window, probes, output,
- *           propose DBL_MAX (sub-cycling: the solid never limits the window)
+ *           after every sub-step and the energy after every window, probes, the sent
+ *           particles' positions at the window's end, propose DBL_MAX (sub-cycling:
+ *           the solid never limits the window), output once the window is accepted
  *
  * A failure anywhere stops everyone with fsi_abort naming what, the particle, where
  * and when; nothing non-finite is ever written or sent. */
@@ -35,6 +38,8 @@
 #include "solid_model.h"
 #include "solid_probes.h"
 #include "solid_rk4.h"
+#include "solid_state.h"
+#include "state_store.h"
 #include "timers.h"
 
 #define ROLE "solid"
@@ -71,12 +76,16 @@ typedef struct {
      * from the other by the one-window lag of u. The fluid logs what it sent;
      * tests/system/test_coupled_plate.sh compares them. */
     double fluid_impulse[FSI_DIM], fluid_work_at_sent, fluid_work;
+    double dt_last;                 /* the last window's length (what v_mean spans) */
     double box_min[FSI_DIM], box_max[FSI_DIM];
     fsi_h5_writer *out;
     fsi_timers timers;
     int t_force, t_integrate, t_exchange, t_output;
-    long substeps;                  /* integrator sub-steps so far */
-    long force_calls;               /* internal-force evaluations so far */
+    long substeps;                  /* integrator sub-steps of the run so far */
+    /* Performance counts, never restored: every sub-step and internal-force
+     * evaluation computed, those of repeated windows included (as the timers). */
+    long substeps_computed, force_calls;
+    fsi_state saved;                /* the state at the window's start (save_state) */
     char msg[512];
 } solid_run;
 
@@ -112,6 +121,77 @@ static void free_run(solid_run *s)
     free(s->interface_damping);
     free(s->f_held);
     free(s->scratch);
+    fsi_state_free(&s->saved);
+}
+
+/* The main loop's state, what a repeated window starts from besides the model's: the
+ * particles' positions, velocities and accelerations, the internal force at their
+ * positions (the integrator's first acceleration of the next window uses it), the
+ * window means the next gather builds on, the last window's length, and the totals of
+ * the energy check, the fluid's loads, the density sent and the sub-steps. Everything
+ * else is set within each window before it is read: the surface set, the fluid's
+ * loads and the impedance (exchange), the held force, the external forces, x_prev
+ * and the RK4 stages (advance); the prescribed loads and the probes are functions of
+ * the time and the particles. */
+enum { RUN_STATE_FIELDS = 17 };
+
+static int run_state_fields(solid_run *s, solid_state_field *f)
+{
+    const size_t v = (size_t)s->p.n * FSI_DIM * sizeof(double);
+    int k = 0;
+    f[k++] = (solid_state_field){"solid.x", s->p.x, v};
+    f[k++] = (solid_state_field){"solid.v", s->p.v, v};
+    f[k++] = (solid_state_field){"solid.a", s->p.a, v};
+    f[k++] = (solid_state_field){"solid.f_int", s->f_int, v};
+    f[k++] = (solid_state_field){"solid.x_window", s->iface.x_window, v};
+    f[k++] = (solid_state_field){"solid.v_mean", s->iface.v_mean, v};
+    f[k++] = (solid_state_field){"solid.have_x_window", &s->iface.have_x_window,
+                                 sizeof s->iface.have_x_window};
+    f[k++] = (solid_state_field){"solid.dt_mean", &s->iface.dt_mean, sizeof s->iface.dt_mean};
+    f[k++] = (solid_state_field){"solid.dt_last", &s->dt_last, sizeof s->dt_last};
+    f[k++] = (solid_state_field){"solid.density_min", &s->iface.density_min,
+                                 sizeof s->iface.density_min};
+    f[k++] = (solid_state_field){"solid.density_max", &s->iface.density_max,
+                                 sizeof s->iface.density_max};
+    f[k++] = (solid_state_field){"solid.work", &s->work, sizeof s->work};
+    f[k++] = (solid_state_field){"solid.work_in", &s->work_in, sizeof s->work_in};
+    f[k++] = (solid_state_field){"solid.fluid_impulse", s->fluid_impulse,
+                                 sizeof s->fluid_impulse};
+    f[k++] = (solid_state_field){"solid.fluid_work_at_sent", &s->fluid_work_at_sent,
+                                 sizeof s->fluid_work_at_sent};
+    f[k++] = (solid_state_field){"solid.fluid_work", &s->fluid_work, sizeof s->fluid_work};
+    f[k++] = (solid_state_field){"solid.substeps", &s->substeps, sizeof s->substeps};
+    return k;
+}
+
+/* Saves the state at the start of a window (s->saved, its memory reused). Returns 0,
+ * or -1 with s->msg set. */
+static int save_state(solid_run *s)
+{
+    solid_state_field f[RUN_STATE_FIELDS];
+    fsi_state_clear(&s->saved);
+    if (solid_state_put_fields(&s->saved, f, run_state_fields(s, f)) != 0 ||
+        solid_model_save_state(s->model, &s->p, &s->saved) != 0) {
+        snprintf(s->msg, sizeof s->msg, "out of memory saving the state of %d solid "
+                 "particles", s->p.n);
+        return -1;
+    }
+    return 0;
+}
+
+/* Restores the state save_state saved. Returns 0, or -1 with s->msg set. */
+static int restore_state(solid_run *s)
+{
+    solid_state_field f[RUN_STATE_FIELDS];
+    const int count = run_state_fields(s, f);
+    if (!solid_state_fields_match(&s->saved, f, count) ||
+        solid_model_restore_state(s->model, &s->p, &s->saved) != 0 ||
+        solid_state_get_fields(&s->saved, f, count) != 0) {
+        snprintf(s->msg, sizeof s->msg, "the state saved at the window's start is missing "
+                 "or does not fit the %d solid particles", s->p.n);
+        return -1;
+    }
+    return 0;
 }
 
 static int write_static(solid_run *s)
@@ -271,7 +351,7 @@ static void hold_interface_force(solid_run *s)
         const double mc = s->interface_damping[i] * p->density[i] * p->volume[i];
         for (int d = 0; d < FSI_DIM; d++) {
             const int k = i * FSI_DIM + d;
-            s->f_held[k] = s->f_fluid[k] + mc * s->iface.v_mean[k];
+            s->f_held[k] = s->f_fluid[k] + mc * s->iface.u_fluid[k];
         }
     }
 }
@@ -284,16 +364,17 @@ static void external_forces(solid_run *s, double t, double *f_ext)
 }
 
 /* Publishes the surface state at t_k and takes the fluid's loads of this window. */
-static int exchange(solid_run *s, fsi_participant *part, double dt_last)
+static int exchange(solid_run *s, fsi_participant *part)
 {
     memset(s->iface.surface, 0, (size_t)s->iface.capacity);
     if (fsi_coupled(part)) {
         solid_model_surface(s->model, &s->p, s->iface.surface);
         solid_interface_gather(&s->iface, &s->p, solid_model_density(s->model, &s->p),
-                               dt_last);
+                               s->dt_last);
     } else {
         s->iface.state.n = 0;
     }
+    s->dt_last = fsi_window(part);
     if (fsi_write_interface(part, &s->iface.state) != 0) {
         snprintf(s->msg, sizeof s->msg, "cannot publish the solid state (%d particles)",
                  s->iface.state.n);
@@ -301,6 +382,14 @@ static int exchange(solid_run *s, fsi_participant *part, double dt_last)
     }
     fsi_interface loads;
     fsi_read_interface(part, &loads);
+    /* The impedance's reference u is the velocity the fluid moved each particle with,
+     * which the library hands back in 'velocity'. In an explicit run that is the
+     * velocity sent, v_mean, bit for bit, and the library of this version does not
+     * fill the array on the solid's side (it points at a buffer of the right size
+     * whose contents are undefined): only an implicit run's, one with checkpoints,
+     * is taken; else solid_interface_take uses v_mean. */
+    if (!fsi_requires_writing_checkpoint(part) && !fsi_requires_reading_checkpoint(part))
+        loads.velocity = NULL;
     if (solid_interface_take(&s->iface, &loads, &s->p, s->f_fluid, s->p_fluid, s->msg,
                              sizeof s->msg) != 0)
         return -1;
@@ -396,11 +485,12 @@ static int advance(solid_run *s, double t0, double dt, int window)
         n = 1;
     double h = dt / (double)n;
     s->substeps += n;
+    s->substeps_computed += n;
     for (int i = 0; i < p->n; i++)
         for (int d = 0; d < FSI_DIM; d++) {
             const int k = i * FSI_DIM + d;
             s->fluid_impulse[d] += dt * s->f_fluid[k];
-            s->fluid_work_at_sent += dt * s->f_fluid[k] * s->iface.v_mean[k];
+            s->fluid_work_at_sent += dt * s->f_fluid[k] * s->iface.u_fluid[k];
         }
     for (long j = 0; j < n; j++) {
         double t = t0 + dt * (double)(j + 1) / (double)n;
@@ -519,14 +609,19 @@ int main(void)
     s.t_exchange = fsi_timer_index(&s.timers, "exchange");
     s.t_output = fsi_timer_index(&s.timers, "output");
 
-    double dt_last = 0.0;
     while (fsi_ongoing(part)) {
         double dt = fsi_window(part), t0 = fsi_time(part);
         int window = fsi_window_index(part);
 
+        /* Implicit coupling: back to the window's start when the coupler repeats it;
+         * the state to come back to, at the window's first iteration. */
+        if ((fsi_requires_reading_checkpoint(part) && restore_state(&s) != 0) ||
+            (fsi_requires_writing_checkpoint(part) && save_state(&s) != 0)) {
+            fsi_abort(part, "window %d, iteration %d: %s", window, fsi_iteration(part), s.msg);
+            break;
+        }
         fsi_timer_start(&s.timers, s.t_exchange);
-        int rc = exchange(&s, part, dt_last);
-        dt_last = dt;
+        int rc = exchange(&s, part);
         fsi_timer_stop(&s.timers, s.t_exchange);
         if (rc != 0) {
             fsi_abort(part, "window %d: %s", window, s.msg);
@@ -537,8 +632,19 @@ int main(void)
             break;
         }
         solid_probes_set(&s.probes, &s.p, part);
-        int frame = fsi_output_frame(part);
-        if (frame >= 0) {
+        /* Where the particles sent at t_k are at t_k + dt: the library compares it with
+         * the motion the fluid was given (nothing in an explicit run). */
+        fsi_interface end;
+        solid_interface_window_end(&s.iface, &s.p, &end);
+        if (fsi_write_window_end(part, &end) != 0) {
+            fsi_abort(part, "window %d: cannot send the positions of %d particles at the "
+                      "window's end", window, end.n);
+            break;
+        }
+        const int frame = fsi_output_frame(part);
+        fsi_advance(part, DBL_MAX);   /* sub-cycling: the solid never limits the window */
+        /* Output only of the state the run goes on from. */
+        if (frame >= 0 && fsi_window_complete(part)) {
             fsi_timer_start(&s.timers, s.t_output);
             rc = write_frame(&s, frame, t0 + dt, window);
             fsi_timer_stop(&s.timers, s.t_output);
@@ -548,7 +654,6 @@ int main(void)
                 break;
             }
         }
-        fsi_advance(part, DBL_MAX);   /* sub-cycling: the solid never limits the window */
     }
     if (s.model) {
         fsi_info("energy at the end: kinetic %.6g J, strain %.6g J; initial %.6g J, work "
@@ -568,17 +673,22 @@ int main(void)
         /* One "bond update" is one directed bond through one internal-force call: the
          * unit bench/solid_validation.sh reports (docs/performance.md). Particle-steps
          * count integrator steps over the internal force's time; with RK4 a step takes
-         * four evaluations. */
+         * four evaluations. Both count what was computed, repeated windows of an
+         * implicit run included, as the timers do. */
         const double force_s = s.timers.seconds[s.t_force];
         const double updates =
             (double)solid_model_interaction_count(s.model) * (double)s.force_calls;
-        fsi_info("performance: %ld sub-steps (%s, %ld force evaluations) of %d particles and "
-                 "%lld interactions on %d thread(s); internal force %.3f s (%.4g interaction "
-                 "updates/s, %.4g particle-steps/s), integration %.3f s", s.substeps,
-                 s.rk4 ? "RK4" : "velocity Verlet", s.force_calls, s.p.n,
-                 (long long)solid_model_interaction_count(s.model), omp_get_max_threads(),
-                 force_s, force_s > 0.0 ? updates / force_s : 0.0,
-                 force_s > 0.0 ? (double)s.p.n * (double)s.substeps / force_s : 0.0,
+        char repeated[96] = "";
+        if (s.substeps_computed != s.substeps)
+            snprintf(repeated, sizeof repeated, "; %ld of them in accepted windows",
+                     s.substeps);
+        fsi_info("performance: %ld sub-steps (%s, %ld force evaluations%s) of %d particles "
+                 "and %lld interactions on %d thread(s); internal force %.3f s (%.4g "
+                 "interaction updates/s, %.4g particle-steps/s), integration %.3f s",
+                 s.substeps_computed, s.rk4 ? "RK4" : "velocity Verlet", s.force_calls,
+                 repeated, s.p.n, (long long)solid_model_interaction_count(s.model),
+                 omp_get_max_threads(), force_s, force_s > 0.0 ? updates / force_s : 0.0,
+                 force_s > 0.0 ? (double)s.p.n * (double)s.substeps_computed / force_s : 0.0,
                  s.timers.seconds[s.t_integrate]);
     }
     free_run(&s);

@@ -16,6 +16,7 @@
 #include "case_file.h"
 #include "h5_output.h"
 #include "solid_particles.h"
+#include "state_store.h"
 
 typedef struct solid_model solid_model;
 
@@ -63,6 +64,21 @@ int solid_model_write_fields(const solid_model *m, fsi_h5_writer *out);
 
 /* Strain energy of the body [J, per unit thickness in 2D] for the energy check. */
 double solid_model_strain_energy(const solid_model *m, const solid_particles *p);
+
+/* The model's state (implicit coupling, docs/coupling.md: the main loop saves it at a
+ * window's start and restores it when the coupler repeats the window; later also the
+ * coupled checkpoints on disk). Save puts into st, without clearing it, everything
+ * the internal-force calls have committed (broken bonds, stress, plastic state, ...),
+ * as entries named "<model>.<array>"; restore brings the model back to exactly that
+ * state, so that the same positions then give the same forces, fields and energy bit
+ * for bit, and recomputes what it derives from it (shape tensors, damage, ...). What
+ * every internal-force call rewrites before reading it is not saved. Restore works
+ * on the model the state was saved from or on a fresh one created from the same case
+ * and particles. Both return 0, or -1: save when memory runs out (st->failed),
+ * restore when st lacks an entry or holds one of another size (then nothing is
+ * changed). */
+int solid_model_save_state(const solid_model *m, const solid_particles *p, fsi_state *st);
+int solid_model_restore_state(solid_model *m, solid_particles *p, const fsi_state *st);
 
 /* Pair interactions one internal-force call works through (for NOSB-PD the directed
  * bonds of the reference families): the unit of the performance figures in the log. */

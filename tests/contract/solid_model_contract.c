@@ -16,7 +16,12 @@
  *  6. the density the fluid is sent (solid_model_density) is the material's, bit for
  *     bit, at creation, and after the uniform stretch of 2. lies between the
  *     material's and rho0 (1 - 2 e) at every point (a continuity density falls by
- *     about e, a total-Lagrangian model keeps rho0): positive, finite, in kg/m^3. */
+ *     about e, a total-Lagrangian model keeps rho0): positive, finite, in kg/m^3;
+ *  7. the saved state is complete (solid_model_save_state / restore_state): after
+ *     steps of a random deformation, restoring the state saved part-way, into the
+ *     same model or a fresh one, and repeating the remaining steps gives the same
+ *     forces, strain energy, density, stable step and saved state bit for bit; a
+ *     store without the model's entries is refused and changes nothing. */
 #include <math.h>
 #include <omp.h>
 #include <stdint.h>
@@ -28,6 +33,7 @@
 #include "case_file.h"
 #include "solid_model.h"
 #include "solid_particles.h"
+#include "state_store.h"
 
 #include "unit_check.h"
 #include "unit_random.h"
@@ -348,6 +354,136 @@ static void test_threads(void)
     test_lattice_free(p);
 }
 
+/* Step k of a random deformation: x = x0 + k 1e-3 dx w (w fixed, uniform in
+ * [-1/2, 1/2) per component), from the positions of step k - 1; the forces into f. */
+static void deformation_step(solid_model *m, solid_particles *p, const double *w,
+                             double *x_prev, double *f, int k)
+{
+    memcpy(x_prev, p->x, (size_t)p->n * FSI_DIM * sizeof(double));
+    for (int i = 0; i < p->n * FSI_DIM; i++)
+        p->x[i] = p->x0[i] + 1e-3 * DX * k * w[i];
+    force(m, p, x_prev, f);
+}
+
+/* Steps from..to-1 (positions of step from - 1 in p), then what must match: forces,
+ * strain energy, density, stable step, the saved state (into st). */
+typedef struct {
+    double *f, energy, dt;
+    double *rho;
+} step_result;
+
+static void run_steps(solid_model *m, solid_particles *p, const double *w, double *x_prev,
+                      int from, int to, step_result *r, fsi_state *st)
+{
+    for (int k = from; k < to; k++)
+        deformation_step(m, p, w, x_prev, r->f, k);
+    r->energy = solid_model_strain_energy(m, p);
+    r->dt = solid_model_stable_dt(m, p);
+    memcpy(r->rho, solid_model_density(m, p), (size_t)p->n * sizeof(double));
+    fsi_state_clear(st);
+    CHECK(solid_model_save_state(m, p, st) == 0, "save_state failed");
+}
+
+/* Entries of a that b lacks or holds with other bytes (and the other way round). */
+static int state_differences(const fsi_state *a, const fsi_state *b)
+{
+    int differ = 0, used_a = 0, used_b = 0;
+    for (int k = 0; k < a->n; k++) {
+        const fsi_state_entry *e = &a->entry[k];
+        if (!e->used)
+            continue;
+        used_a++;
+        size_t bytes;
+        const void *other = fsi_state_data(b, e->name, &bytes);
+        if (!other || bytes != e->bytes || memcmp(other, e->data, bytes) != 0) {
+            printf("  state entry %s differs\n", e->name);
+            differ++;
+        }
+    }
+    for (int k = 0; k < b->n; k++)
+        used_b += b->entry[k].used;
+    return differ + (used_a != used_b);
+}
+
+static int result_differences(const solid_particles *p, const step_result *a,
+                              const step_result *b)
+{
+    int differ = memcmp(&a->energy, &b->energy, sizeof a->energy) != 0;
+    differ += memcmp(&a->dt, &b->dt, sizeof a->dt) != 0;
+    differ += memcmp(a->f, b->f, (size_t)p->n * FSI_DIM * sizeof(double)) != 0;
+    differ += memcmp(a->rho, b->rho, (size_t)p->n * sizeof(double)) != 0;
+    return differ;
+}
+
+static void test_save_restore(void)
+{
+    solid_particles *p = lattice();
+    const size_t vec = (size_t)p->n * FSI_DIM * sizeof(double);
+    double *w = malloc(vec), *x_prev = malloc(vec), *x_saved = malloc(vec);
+    step_result r[3];
+    for (int k = 0; k < 3; k++) {
+        r[k].f = malloc(vec);
+        r[k].rho = malloc((size_t)p->n * sizeof(double));
+    }
+    uint64_t seed = 7;
+    for (int i = 0; i < p->n * FSI_DIM; i++)
+        w[i] = unit_uniform(&seed) - 0.5;
+    memcpy(p->x, p->x0, vec);
+    fsi_state saved = {0}, after[3] = {{0}};
+    solid_model *m = make_model(p, E);
+    run_steps(m, p, w, x_prev, 1, 4, &r[0], &saved);     /* steps 1-3, then save */
+    memcpy(x_saved, p->x, vec);
+    run_steps(m, p, w, x_prev, 4, 7, &r[0], &after[0]);  /* steps 4-6 */
+    /* The same model back to step 3, then steps 4-6 again. */
+    CHECK(solid_model_restore_state(m, p, &saved) == 0, "restore_state failed");
+    memcpy(p->x, x_saved, vec);
+    run_steps(m, p, w, x_prev, 4, 7, &r[1], &after[1]);
+    /* A fresh model given the state of step 3 (a restart). */
+    solid_model *fresh = make_model(p, E);
+    CHECK(solid_model_restore_state(fresh, p, &saved) == 0, "restore_state (fresh) failed");
+    memcpy(p->x, x_saved, vec);
+    run_steps(fresh, p, w, x_prev, 4, 7, &r[2], &after[2]);
+    const int same = result_differences(p, &r[0], &r[1]) + state_differences(&after[0], &after[1]);
+    const int fresh_differ =
+        result_differences(p, &r[0], &r[2]) + state_differences(&after[0], &after[2]);
+    int entries = 0;
+    size_t bytes = 0;
+    for (int k = 0; k < saved.n; k++) {
+        entries += saved.entry[k].used;
+        bytes += saved.entry[k].used ? saved.entry[k].bytes : 0;
+    }
+    /* An empty store: refused, and the model goes on as if nothing was asked. */
+    fsi_state empty = {0};
+    const int refused = solid_model_restore_state(fresh, p, &empty) == -1;
+    fsi_state again = {0};
+    solid_model_save_state(fresh, p, &again);
+    const int unchanged = state_differences(&after[2], &again) == 0;
+    printf("save and restore: %d entries, %zu bytes for %d points; after restoring step 3 "
+           "and repeating steps 4-6: %d differences (same model), %d (fresh model); an "
+           "empty store %s\n", entries, bytes, p->n, same, fresh_differ,
+           refused && unchanged ? "refused, nothing changed" : "NOT refused cleanly");
+    CHECK(entries > 0, "the model saves nothing");
+    CHECK(same == 0, "restoring into the same model does not repeat the steps bit for bit");
+    CHECK(fresh_differ == 0, "restoring into a fresh model does not repeat the steps bit for "
+          "bit");
+    CHECK(refused && unchanged, "restoring from an empty store: not refused, or it changed "
+          "the model");
+    fsi_state_free(&saved);
+    fsi_state_free(&empty);
+    fsi_state_free(&again);
+    for (int k = 0; k < 3; k++) {
+        fsi_state_free(&after[k]);
+        free(r[k].f);
+        free(r[k].rho);
+    }
+    solid_model_free(m);
+    solid_model_free(fresh);
+    free(w);
+    free(x_prev);
+    free(x_saved);
+    test_lattice_free(p);
+}
+
 /* The reach of the interactions from their number per point, a disc (ball) of radius
  * delta holding pi (delta / dx)^2 (4/3 pi (delta / dx)^3) points; the mean over the
  * lattice, edges included, errs low, hence the margin of a spacing. */
@@ -373,6 +509,7 @@ int main(int argc, char **argv)
     test_stable_dt();
     test_momentum();
     test_threads();
+    test_save_restore();
     char name[128];
     snprintf(name, sizeof name, "contract_solid_%s", model_name);
     return unit_check_report(name);
