@@ -3,6 +3,7 @@
 #include <errno.h>
 #include <limits.h>
 #include <math.h>
+#include <signal.h>
 #include <sys/stat.h>
 #include <stdarg.h>
 #include <stdio.h>
@@ -108,6 +109,7 @@ struct fsi_participant {
 
 static int read_restart(fsi_participant *p);
 static int apply_restart(fsi_participant *p);
+static void test_kill_switch(const fsi_participant *p);
 
 static const char *other_role(const fsi_participant *p)
 {
@@ -493,6 +495,7 @@ int fsi_ongoing(fsi_participant *p)
     p->flags = p->next_flags;
     p->frame = p->next_frame;
     fsi_bus_set_heartbeat(p->bus, p->window, FSI_STATE_RUNNING);
+    test_kill_switch(p);
     if (p->flags & FSI_STEP_FINISH)
         p->finished = 1;
     return !p->finished;
@@ -895,6 +898,21 @@ static void test_slow_switch(const fsi_participant *p)
     double until = fsi_wall_seconds() + seconds;
     while (fsi_wall_seconds() < until)
         ;
+}
+
+/* Test switch FSI_TEST_KILL="NAME:K": participant NAME kills itself with SIGKILL at the
+ * start of window K (after its first iteration's grant), as kill -9 would: how the
+ * tests interrupt a run at a known point to restart it from a checkpoint. */
+static void test_kill_switch(const fsi_participant *p)
+{
+    const char *spec = getenv("FSI_TEST_KILL");
+    const char *colon = spec ? strrchr(spec, ':') : NULL;
+    if (!colon || (size_t)(colon - spec) != strlen(p->name) ||
+        strncmp(spec, p->name, strlen(p->name)) != 0 || atoi(colon + 1) != p->window ||
+        p->iteration != 0)
+        return;
+    fsi_warn("test switch FSI_TEST_KILL: killed at the start of window %d", p->window);
+    raise(SIGKILL);
 }
 
 int fsi_advance(fsi_participant *p, double dt_next_max)

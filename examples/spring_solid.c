@@ -177,11 +177,17 @@ int main(void)
      * their positions at t_k + dt. */
     const fsi_interface end = {.n = s.n, .id = s.id, .position = s.position};
     fsi_state saved = {0};
+    /* A run restarted from a coupled checkpoint goes on from its state. */
+    if (fsi_restart_state(p) && springs_restore(&s, fsi_restart_state(p)) != 0) {
+        fsi_abort(p, "the checkpoint's state does not fit %d particles", s.n);
+        return fsi_close(p, NULL);
+    }
 
     while (fsi_ongoing(p)) {
         double dt = fsi_window(p);
         if ((fsi_requires_reading_checkpoint(p) && springs_restore(&s, &saved) != 0) ||
-            (fsi_requires_writing_checkpoint(p) && springs_save(&s, &saved) != 0)) {
+            (fsi_requires_writing_checkpoint(p) &&
+             (springs_save(&s, &saved) != 0 || fsi_write_checkpoint(p, &saved) != 0))) {
             fsi_abort(p, "cannot save or restore the state of window %d", fsi_window_index(p));
             break;
         }

@@ -179,14 +179,15 @@ static int save_state(solid_run *s)
     return 0;
 }
 
-/* Restores the state save_state saved. Returns 0, or -1 with s->msg set. */
-static int restore_state(solid_run *s)
+/* Restores a state save_state saved (s->saved, or a checkpoint's). Returns 0, or -1
+ * with s->msg set. */
+static int restore_state(solid_run *s, const fsi_state *st)
 {
     solid_state_field f[RUN_STATE_FIELDS];
     const int count = run_state_fields(s, f);
-    if (!solid_state_fields_match(&s->saved, f, count) ||
-        solid_model_restore_state(s->model, &s->p, &s->saved) != 0 ||
-        solid_state_get_fields(&s->saved, f, count) != 0) {
+    if (!solid_state_fields_match(st, f, count) ||
+        solid_model_restore_state(s->model, &s->p, st) != 0 ||
+        solid_state_get_fields(st, f, count) != 0) {
         snprintf(s->msg, sizeof s->msg, "the state saved at the window's start is missing "
                  "or does not fit the %d solid particles", s->p.n);
         return -1;
@@ -383,13 +384,8 @@ static int exchange(solid_run *s, fsi_participant *part)
     fsi_interface loads;
     fsi_read_interface(part, &loads);
     /* The impedance's reference u is the velocity the fluid moved each particle with,
-     * which the library hands back in 'velocity'. In an explicit run that is the
-     * velocity sent, v_mean, bit for bit, and the library of this version does not
-     * fill the array on the solid's side (it points at a buffer of the right size
-     * whose contents are undefined): only an implicit run's, one with checkpoints,
-     * is taken; else solid_interface_take uses v_mean. */
-    if (!fsi_requires_writing_checkpoint(part) && !fsi_requires_reading_checkpoint(part))
-        loads.velocity = NULL;
+     * which the library hands back in 'velocity' (in an explicit run the velocity
+     * sent, v_mean, bit for bit). */
     if (solid_interface_take(&s->iface, &loads, &s->p, s->f_fluid, s->p_fluid, s->msg,
                              sizeof s->msg) != 0)
         return -1;
@@ -608,6 +604,12 @@ int main(void)
     s.t_integrate = fsi_timer_index(&s.timers, "integration");
     s.t_exchange = fsi_timer_index(&s.timers, "exchange");
     s.t_output = fsi_timer_index(&s.timers, "output");
+    /* A restarted run goes on from the checkpoint's state (docs/checkpoints.md). */
+    if (fsi_restart_state(part) && restore_state(&s, fsi_restart_state(part)) != 0) {
+        fsi_abort(part, "restart: %s", s.msg);
+        free_run(&s);
+        return FSI_EXIT_RUN_FAILURE;
+    }
 
     while (fsi_ongoing(part)) {
         double dt = fsi_window(part), t0 = fsi_time(part);
@@ -615,9 +617,14 @@ int main(void)
 
         /* Implicit coupling: back to the window's start when the coupler repeats it;
          * the state to come back to, at the window's first iteration. */
-        if ((fsi_requires_reading_checkpoint(part) && restore_state(&s) != 0) ||
+        if ((fsi_requires_reading_checkpoint(part) && restore_state(&s, &s.saved) != 0) ||
             (fsi_requires_writing_checkpoint(part) && save_state(&s) != 0)) {
             fsi_abort(part, "window %d, iteration %d: %s", window, fsi_iteration(part), s.msg);
+            break;
+        }
+        /* A coupled checkpoint is this state on disk (docs/checkpoints.md). */
+        if (fsi_requires_writing_checkpoint(part) && fsi_write_checkpoint(part, &s.saved) != 0) {
+            fsi_abort(part, "window %d: cannot write the solid's checkpoint", window);
             break;
         }
         fsi_timer_start(&s.timers, s.t_exchange);
