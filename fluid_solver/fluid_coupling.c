@@ -1,6 +1,7 @@
 /* The fluid's side of the coupling (fluid_coupling.h). */
 #include "fluid_coupling.h"
 
+#include "fluid_state.h"
 #include "grow.h"
 
 #include <math.h>
@@ -223,4 +224,32 @@ int fluid_coupling_count_inside(fluid_coupling *c, const fluid_particles *p, int
         }
     }
     return count;
+}
+
+/* The totals (no padding: the state is compared byte for byte). */
+typedef struct {
+    int64_t n_windows;
+    double work_on_fluid, work_at_sent, impulse_sent[FSI_DIM], density_min, density_max;
+} coupling_totals;
+
+int fluid_coupling_save_state(const fluid_coupling *c, fsi_state *st, const char *prefix)
+{
+    coupling_totals t = {c->n_windows, c->work_on_fluid, c->work_at_sent, {0},
+                         c->density_min, c->density_max};
+    memcpy(t.impulse_sent, c->impulse_sent, sizeof t.impulse_sent);
+    return fluid_state_put(st, prefix, "totals", &t, sizeof t);
+}
+
+int fluid_coupling_restore_state(fluid_coupling *c, const fsi_state *st, const char *prefix)
+{
+    coupling_totals t;
+    if (fluid_state_get(st, prefix, "totals", &t, sizeof t) != 0)
+        return -1;
+    c->n_windows = (int)t.n_windows;
+    c->work_on_fluid = t.work_on_fluid;
+    c->work_at_sent = t.work_at_sent;
+    memcpy(c->impulse_sent, t.impulse_sent, sizeof t.impulse_sent);
+    c->density_min = t.density_min;
+    c->density_max = t.density_max;
+    return 0;
 }

@@ -22,6 +22,7 @@
 #include "fluid_particles.h"
 #include "fluid_scheme.h"
 #include "participant.h"
+#include "state_store.h"
 
 typedef struct {
     fluid_boundary boundary;
@@ -56,6 +57,14 @@ typedef struct {
  * fluid of acoustic impedance rho0 c0 [Pa s/m] (sent with the loads). */
 void fluid_coupling_init(fluid_coupling *c, int n_fixed, double impedance);
 void fluid_coupling_free(fluid_coupling *c);
+
+/* The coupling's totals over the run under "<prefix>.*" (the main loop's state,
+ * fluid_main.c): windows with a boundary, the work and impulse sent, the density range
+ * received. Not the boundary itself nor the window's impulse: the start of every
+ * window replaces them (fluid_coupling_receive), and a restore is always followed by
+ * one. 0, or -1 (memory; restore: no such state). */
+int fluid_coupling_save_state(const fluid_coupling *c, fsi_state *st, const char *prefix);
+int fluid_coupling_restore_state(fluid_coupling *c, const fsi_state *st, const char *prefix);
 
 /* Start of window [t0, ...]: reads the solid's state at t0 and puts its particles in
  * the tail of p. Returns 0, or -1 with msg. p->n may change. */

@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "fluid_parallel.h"
+#include "fluid_state.h"
 
 enum { SIDE_UNKNOWN = 0, SIDE_BELOW = 1, SIDE_ABOVE = 2 };
 
@@ -134,6 +135,24 @@ int fluid_leak_reorder(fluid_leak *l, const int *sorted)
     free(l->side);
     l->side = side;
     return 0;
+}
+
+static size_t side_bytes(const fluid_leak *l)
+{
+    return l->n_walls > 0 ? (size_t)l->n * (size_t)l->n_walls * FSI_DIM : 0;
+}
+
+int fluid_leak_save_state(const fluid_leak *l, fsi_state *st, const char *prefix)
+{
+    return fluid_state_put(st, prefix, "side", l->side, side_bytes(l));
+}
+
+int fluid_leak_restore_state(fluid_leak *l, const fsi_state *st, const char *prefix)
+{
+    const size_t bytes = side_bytes(l);
+    if (bytes == 0)
+        return fluid_state_size(st, prefix, "side") == 0 ? 0 : -1;
+    return fluid_state_get(st, prefix, "side", l->side, bytes);
 }
 
 void fluid_leak_free(fluid_leak *l)

@@ -23,6 +23,7 @@
 #include "fluid_geometry.h"
 #include "fluid_particles.h"
 #include "periodic.h"
+#include "state_store.h"
 
 typedef struct {
     const fluid_geometry *geometry;     /* the walls (not owned) */
@@ -57,6 +58,12 @@ int fluid_leak_check(fluid_leak *l, const fluid_particles *p, double t,
 /* The particles were permuted: the particle now at index k was at sorted[k]. Returns 0,
  * or -1 when memory runs out (nothing changed). */
 int fluid_leak_reorder(fluid_leak *l, const int *sorted);
+
+/* The sides of every particle against every wall under "<prefix>.side" (the walls'
+ * boxes are computed at every check), and back. 0, or -1 (memory; restore: no such
+ * state, or one for another number of particles or walls). */
+int fluid_leak_save_state(const fluid_leak *l, fsi_state *st, const char *prefix);
+int fluid_leak_restore_state(fluid_leak *l, const fsi_state *st, const char *prefix);
 
 void fluid_leak_free(fluid_leak *l);
 

@@ -30,6 +30,7 @@
 #include "fluid_periodic.h"
 #include "fluid_probes.h"
 #include "fluid_scheme.h"
+#include "fluid_state.h"
 #include "fluid_step.h"
 #include "grow.h"
 #include "fluid_wall_motion.h"
@@ -87,7 +88,9 @@ typedef struct {
     fsi_h5_writer *out;
     fsi_timers timers;
     int t_rates, t_integrate, t_exchange, t_output;
-    long steps;
+    long steps;                 /* steps of the state (restored with it) */
+    long steps_taken;           /* every step taken, a repeated window's again (the
+                                 * performance line: repeated iterations are real work) */
     double stable_dt;           /* the stable step at the last evaluation [s] */
     /* The penetration check (fluid_coupling_count_inside), after every window. */
     long inside_windows;        /* windows with a fluid particle inside the solid */
@@ -96,6 +99,8 @@ typedef struct {
     int *order;         /* original index (output row) of the particle at each index of
                          * the fixed part; they are sorted by cell now and then */
     long reorder_interval, reordered_at;
+    fsi_state saved;            /* the state at the start of the window (save_state) */
+    char window[64];            /* "window k" (", iteration i" when repeated), for messages */
     char msg[512];
 } fluid_run;
 
@@ -121,6 +126,7 @@ static void free_run(fluid_run *s)
     free(s->drho);
     free(s->accel);
     free(s->grad_p);
+    fsi_state_free(&s->saved);
 }
 
 /* sum m v of the fluid particles. */
@@ -414,7 +420,7 @@ static double max_acceleration(const fluid_run *s)
 }
 
 /* A non-finite position, velocity or density of a fluid particle after a step. */
-static int check_finite(fluid_run *s, double t, int window)
+static int check_finite(fluid_run *s, double t, const char *window)
 {
     const fluid_particles *p = &s->p;
     const int n = p->n;
@@ -433,7 +439,7 @@ static int check_finite(fluid_run *s, double t, int window)
     if (first == n)
         return 0;
     snprintf(s->msg, sizeof s->msg, "particle %d has a non-finite position, velocity or "
-             "density (density %g) at t = %.9g s (window %d, step %ld): the integration is "
+             "density (density %g) at t = %.9g s (%s, step %ld): the integration is "
              "unstable", p->id[first], p->density[first], t, window, s->steps);
     return -1;
 }
@@ -441,7 +447,7 @@ static int check_finite(fluid_run *s, double t, int window)
 static const char axis_name[3] = {'x', 'y', 'z'};
 
 /* A fluid particle that went through a wall after a step (fluid_leak.h). */
-static int check_leak(fluid_run *s, int window)
+static int check_leak(fluid_run *s, const char *window)
 {
     fluid_leak_crossing c;
     if (!fluid_leak_check(&s->leak, &s->p, s->t, &c))
@@ -450,7 +456,7 @@ static int check_leak(fluid_run *s, int window)
     char at[128];
     snprintf(s->msg, sizeof s->msg, "particle %d leaked through [%s]: it went from %s the wall "
              "to %s it along %c, now at %s, %.6g m past its face %c = %.9g m (more than one "
-             "kernel support, %.3g m), at t = %.9g s (window %d, step %ld); the walls no "
+             "kernel support, %.3g m), at t = %.9g s (%s, step %ld); the walls no "
              "longer hold the fluid (a sound speed too low for the flow, or walls too thin)",
              s->p.id[c.particle], wall->section, c.upward ? "below" : "above",
              c.upward ? "above" : "below", axis_name[c.axis],
@@ -512,6 +518,7 @@ static int step(fluid_run *s, double dt)
     if (fsi_periodic_any(&s->props.periodic))
         wrap_periodic(s);
     s->steps++;
+    s->steps_taken++;
     fluid_scheme_after_step(s->scheme, &s->p, s->steps);
     fsi_timer_stop(&s->timers, s->t_integrate);
     return 0;
@@ -520,7 +527,7 @@ static int step(fluid_run *s, double dt)
 /* The window [t0, t0 + dt] in steps chosen at every step from the rates at its start
  * (fluid_scheme_stable_dt: acoustic, viscous and force limits), the remaining time cut
  * into equal parts no longer than that, so that the window's end is met exactly. */
-static int advance(fluid_run *s, double t0, double dt, int window)
+static int advance(fluid_run *s, double t0, double dt, const char *window)
 {
     s->t = t0;
     if (s->reorder_interval > 0 && s->steps - s->reordered_at >= s->reorder_interval) {
@@ -545,8 +552,8 @@ static int advance(fluid_run *s, double t0, double dt, int window)
             break;      /* a window of length zero: only the stable step */
         if (!(stable > 0.0) || !isfinite(stable) || j >= MAX_SUBSTEPS ||
             remaining / stable > (double)MAX_SUBSTEPS) {
-            snprintf(s->msg, sizeof s->msg, "the stable step is %g s at t = %.9g s (window "
-                     "%d, %ld steps into it): the window of %g s cannot be sub-cycled",
+            snprintf(s->msg, sizeof s->msg, "the stable step is %g s at t = %.9g s (%s, "
+                     "%ld steps into it): the window of %g s cannot be sub-cycled",
                      stable, s->t, window, j, dt);
             return -1;
         }
@@ -566,7 +573,7 @@ static int advance(fluid_run *s, double t0, double dt, int window)
 
 /* The Mach number of the fastest fluid particle after a window: a warning past
  * MACH_WARN (once), a stop past MACH_STOP. */
-static int check_mach(fluid_run *s, double t, int window)
+static int check_mach(fluid_run *s, double t, const char *window)
 {
     if (!fluid_scheme_compressible(s->scheme))
         return 0;   /* no sound speed: a projection scheme's step follows the flow */
@@ -588,14 +595,14 @@ static int check_mach(fluid_run *s, double t, int window)
     where_text(s, fastest, at, sizeof at);
     if (mach > MACH_STOP) {
         snprintf(s->msg, sizeof s->msg, "particle %d at %s moves at %.4g m/s, Mach %.3g against "
-                 "c0 = %g m/s, at t = %.9g s (window %d): a fluid faster than its sound speed is "
+                 "c0 = %g m/s, at t = %.9g s (%s): a fluid faster than its sound speed is "
                  "outside the weakly compressible method (000 Eq. 7 asks for Mach 0.1: raise "
                  "sound_speed or max_velocity)", p->id[fastest], at, vmax, mach, c0, t, window);
         return -1;
     }
     if (!s->mach_warned)
         fsi_warn("particle %d at %s moves at %.4g m/s, Mach %.3g against c0 = %g m/s, at "
-                 "t = %.9g s (window %d): above %g the density errors of the weakly "
+                 "t = %.9g s (%s): above %g the density errors of the weakly "
                  "compressible fluid (~ Mach^2) pass 10 %% (000 Eq. 7 asks for Mach 0.1: raise "
                  "sound_speed or max_velocity)", p->id[fastest], at, vmax, mach, c0, t, window,
                  MACH_WARN);
@@ -605,7 +612,7 @@ static int check_mach(fluid_run *s, double t, int window)
 
 /* After a window: every fluid particle inside the generous box, the kinetic energy
  * within what gravity has released. */
-static int check_health(fluid_run *s, double t, int window)
+static int check_health(fluid_run *s, double t, const char *window)
 {
     const fluid_particles *p = &s->p;
     /* The box includes the reach of moving walls: only fluid particles can leave. */
@@ -614,7 +621,7 @@ static int check_health(fluid_run *s, double t, int window)
         char at[128];
         snprintf(s->msg, sizeof s->msg, "particle %d left the domain: at %s, more than %g "
                  "diagonals outside the initial box of water and walls, at t = %.9g s "
-                 "(window %d)", p->id[i], where_text(s, i, at, sizeof at), ESCAPE_DIAGONALS,
+                 "(%s)", p->id[i], where_text(s, i, at, sizeof at), ESCAPE_DIAGONALS,
                  t, window);
         return -1;
     }
@@ -645,7 +652,7 @@ static int check_health(fluid_run *s, double t, int window)
                  "plus the potential energy released and the work of moving walls and solid "
                  "(%.6g J) plus the floor %.3g J; fastest: "
                  "particle %d at %s "
-                 "at %.3g m/s; at t = %.9g s (window %d): the integration is unstable",
+                 "at %.3g m/s; at t = %.9g s (%s): the integration is unstable",
                  kinetic, s->energy_limit, budget, s->energy_floor, p->id[fastest],
                  where_text(s, fastest, at, sizeof at), speed, t, window);
         return -1;
@@ -687,7 +694,7 @@ static int receive(fluid_run *s, fsi_participant *part, double t0)
 
 /* Counts the fluid particles inside the solid after a window (fluid_coupling.h); the
  * first window with any gets a warning naming one, the end of the run the totals. */
-static int check_penetration(fluid_run *s, double t, int window)
+static int check_penetration(fluid_run *s, double t, const char *window)
 {
     int first;
     const int inside = fluid_coupling_count_inside(&s->coupling, &s->p, &first);
@@ -698,12 +705,116 @@ static int check_penetration(fluid_run *s, double t, int window)
     if (inside > 0 && s->inside_windows == 0) {
         char at[128];
         fsi_warn("%d fluid particle(s) inside the solid (closer than half the solid's "
-                 "spacing to a solid particle) at t = %.9g s (window %d), e.g. particle %d at %s",
+                 "spacing to a solid particle) at t = %.9g s (%s), e.g. particle %d at %s",
                  inside, t, window, s->p.id[first], where_text(s, first, at, sizeof at));
     }
     s->inside_windows += inside > 0;
     if (inside > s->inside_max)
         s->inside_max = inside;
+    return 0;
+}
+
+/* The main loop's scalars in the saved state (no padding: the state is compared and
+ * written byte for byte). */
+typedef struct {
+    int64_t n, n_fixed, steps, reordered_at, inside_windows, inside_max, mach_warned;
+    double t, wall_work, potential_wrapped, stable_dt;
+} run_header;
+
+/* The fluid's state at the start of a window (implicit coupling, docs/coupling.md), for
+ * restore_state when the coupler repeats the window: the particles (the solid's at the
+ * tail too, though the window's start replaces them: restored in the same number, the
+ * arrays need no reallocation), the per-particle arrays that follow the particle order
+ * (free-slip flags, output order, the moving walls' indices, the leak check's sides),
+ * the counters and totals the run goes on from (time, steps, the last sort, the walls'
+ * work, the potential energy periodic wraps took, the Mach warning, the stable step
+ * proposed, the penetration counts, the coupling's totals) and the scheme's own state
+ * (fluid_scheme_save_state). Probes keep no state. 0, or -1 with s->msg when memory
+ * runs out. */
+static int save_state(fluid_run *s)
+{
+    fsi_state *st = &s->saved;
+    const fluid_particles *p = &s->p;
+    const size_t n = (size_t)p->n, vec = n * FSI_DIM * sizeof(double);
+    const size_t n_fixed = (size_t)s->n_fixed;
+    const run_header h = {p->n, s->n_fixed, s->steps, s->reordered_at, s->inside_windows,
+                          s->inside_max, s->mach_warned, s->t, s->wall_work,
+                          s->potential_wrapped, s->stable_dt};
+    fsi_state_clear(st);
+    fsi_state_put(st, "run.header", &h, sizeof h);
+    fsi_state_put(st, "particles.id", p->id, n * sizeof *p->id);
+    fsi_state_put(st, "particles.x", p->x, vec);
+    fsi_state_put(st, "particles.v", p->v, vec);
+    fsi_state_put(st, "particles.mass", p->mass, n * sizeof *p->mass);
+    fsi_state_put(st, "particles.volume", p->volume, n * sizeof *p->volume);
+    fsi_state_put(st, "particles.density", p->density, n * sizeof *p->density);
+    fsi_state_put(st, "particles.pressure", p->pressure, n * sizeof *p->pressure);
+    fsi_state_put(st, "particles.boundary_acceleration", p->boundary_acceleration, vec);
+    fsi_state_put(st, "particles.boundary_density", p->boundary_density,
+                  n * sizeof *p->boundary_density);
+    fsi_state_put(st, "particles.flags", p->flags, n * sizeof *p->flags);
+    fsi_state_put(st, "run.free_slip", s->free_slip, n_fixed * sizeof *s->free_slip);
+    fsi_state_put(st, "run.order", s->order, n_fixed * sizeof *s->order);
+    if (st->failed || fluid_coupling_save_state(&s->coupling, st, "coupling") != 0 ||
+        fluid_leak_save_state(&s->leak, st, "leak") != 0 ||
+        fluid_wall_motion_save_state(&s->motion, st, "wall_motion") != 0 ||
+        fluid_scheme_save_state(s->scheme, p, st) != 0) {
+        snprintf(s->msg, sizeof s->msg, "out of memory saving the state of %d particles", p->n);
+        return -1;
+    }
+    return 0;
+}
+
+/* The state save_state saved, back: the run goes on as from the start of the window it
+ * was saved at, bit for bit, once the window's start has put the solid's particles in
+ * the tail again (the moving boundary, fluid_coupling_receive). 0, or -1 with s->msg. */
+static int restore_state(fluid_run *s)
+{
+    const fsi_state *st = &s->saved;
+    fluid_particles *p = &s->p;
+    run_header h;
+    if (fsi_state_get(st, "run.header", &h, sizeof h) != 0 || h.n_fixed != s->n_fixed ||
+        h.n < h.n_fixed || h.n > INT32_MAX) {
+        snprintf(s->msg, sizeof s->msg, "no saved state of %d particles to restore", s->n_fixed);
+        return -1;
+    }
+    if (fluid_particles_resize(p, (int)h.n) != 0) {
+        snprintf(s->msg, sizeof s->msg, "out of memory restoring %d particles", (int)h.n);
+        return -1;
+    }
+    const size_t n = (size_t)h.n, vec = n * FSI_DIM * sizeof(double);
+    const size_t n_fixed = (size_t)s->n_fixed;
+    int rc = fsi_state_get(st, "particles.id", p->id, n * sizeof *p->id) |
+             fsi_state_get(st, "particles.x", p->x, vec) |
+             fsi_state_get(st, "particles.v", p->v, vec) |
+             fsi_state_get(st, "particles.mass", p->mass, n * sizeof *p->mass) |
+             fsi_state_get(st, "particles.volume", p->volume, n * sizeof *p->volume) |
+             fsi_state_get(st, "particles.density", p->density, n * sizeof *p->density) |
+             fsi_state_get(st, "particles.pressure", p->pressure, n * sizeof *p->pressure) |
+             fsi_state_get(st, "particles.boundary_acceleration", p->boundary_acceleration,
+                           vec) |
+             fsi_state_get(st, "particles.boundary_density", p->boundary_density,
+                           n * sizeof *p->boundary_density) |
+             fsi_state_get(st, "particles.flags", p->flags, n * sizeof *p->flags) |
+             fsi_state_get(st, "run.free_slip", s->free_slip, n_fixed * sizeof *s->free_slip) |
+             fsi_state_get(st, "run.order", s->order, n_fixed * sizeof *s->order);
+    if (rc != 0 || fluid_coupling_restore_state(&s->coupling, st, "coupling") != 0 ||
+        fluid_leak_restore_state(&s->leak, st, "leak") != 0 ||
+        fluid_wall_motion_restore_state(&s->motion, st, "wall_motion") != 0 ||
+        fluid_scheme_restore_state(s->scheme, p, st) != 0) {
+        snprintf(s->msg, sizeof s->msg, "cannot restore the state saved at the window's start "
+                 "(an entry missing or of another size, or memory ran out)");
+        return -1;
+    }
+    s->steps = (long)h.steps;
+    s->reordered_at = (long)h.reordered_at;
+    s->inside_windows = (long)h.inside_windows;
+    s->inside_max = (int)h.inside_max;
+    s->mach_warned = (int)h.mach_warned;
+    s->t = h.t;
+    s->wall_work = h.wall_work;
+    s->potential_wrapped = h.potential_wrapped;
+    s->stable_dt = h.stable_dt;
     return 0;
 }
 
@@ -744,19 +855,31 @@ int main(void)
     while (fsi_ongoing(part)) {
         double dt = fsi_window(part), t0 = fsi_time(part);
         int window = fsi_window_index(part);
+        if (fsi_iteration(part) > 0)
+            snprintf(s.window, sizeof s.window, "window %d, iteration %d", window,
+                     fsi_iteration(part));
+        else
+            snprintf(s.window, sizeof s.window, "window %d", window);
 
+        /* Implicit coupling: the state at the window's start, saved at its first
+         * iteration and restored whenever the coupler repeats the window. */
+        if ((fsi_requires_reading_checkpoint(part) && restore_state(&s) != 0) ||
+            (fsi_requires_writing_checkpoint(part) && save_state(&s) != 0)) {
+            fsi_abort(part, "%s: %s", s.window, s.msg);
+            break;
+        }
         fsi_timer_start(&s.timers, s.t_exchange);
         int rc = receive(&s, part, t0);
         fsi_timer_stop(&s.timers, s.t_exchange);
         if (rc != 0) {
-            fsi_abort(part, "window %d: %s", window, s.msg);
+            fsi_abort(part, "%s: %s", s.window, s.msg);
             break;
         }
-        if (advance(&s, t0, dt, window) != 0 || check_health(&s, t0 + dt, window) != 0) {
+        if (advance(&s, t0, dt, s.window) != 0 || check_health(&s, t0 + dt, s.window) != 0) {
             fsi_abort(part, "%s", s.msg);
             break;
         }
-        if (check_penetration(&s, t0 + dt, window) != 0) {
+        if (check_penetration(&s, t0 + dt, s.window) != 0) {
             fsi_abort(part, "%s", s.msg);
             break;
         }
@@ -765,12 +888,13 @@ int main(void)
                                     sizeof s.msg);
         fsi_timer_stop(&s.timers, s.t_exchange);
         if (rc != 0) {
-            fsi_abort(part, "window %d: %s", window, s.msg);
+            fsi_abort(part, "%s: %s", s.window, s.msg);
             break;
         }
         int frame = fsi_output_frame(part);
         if (frame >= 0 || fsi_probe_window(part)) {
-            /* Pressures, walls and gradients of the state at the window's end. */
+            /* Pressures, walls and gradients of the state at the window's end; before
+             * fsi_advance, which carries the probes. */
             if (evaluate(&s) != 0) {
                 fsi_abort(part, "%s", s.msg);
                 break;
@@ -778,7 +902,12 @@ int main(void)
             fluid_scheme_pressure_gradient(s.scheme, &s.p, s.grad_p);
             fluid_probes_set(&s.probes, &s.p, s.grad_p, t0 + dt, part);
         }
-        if (frame >= 0) {
+        /* Coupled, the window is the fluid's step: the solid's motion it sees and the
+         * loads it returns are then as fresh as the fluid's own state. */
+        fsi_advance(part, fsi_coupled(part) && s.stable_dt > 0.0 ? s.stable_dt : DBL_MAX);
+        /* The frame only of a window the coupler accepts (a repeated one is computed
+         * again). */
+        if (frame >= 0 && fsi_window_complete(part)) {
             fsi_timer_start(&s.timers, s.t_output);
             rc = write_frame(&s, frame, t0 + dt, window);
             fsi_timer_stop(&s.timers, s.t_output);
@@ -788,9 +917,6 @@ int main(void)
                 break;
             }
         }
-        /* Coupled, the window is the fluid's step: the solid's motion it sees and the
-         * loads it returns are then as fresh as the fluid's own state. */
-        fsi_advance(part, fsi_coupled(part) && s.stable_dt > 0.0 ? s.stable_dt : DBL_MAX);
     }
     if (s.scheme) {
         double vmax = 0.0;
@@ -807,10 +933,10 @@ int main(void)
         const double busy = s.timers.seconds[s.t_rates] + s.timers.seconds[s.t_integrate];
         fsi_info("performance: %ld steps of %d fluid particles (%d in all, %lld neighbour "
                  "pairs) on %d thread(s); rates %.3f s, integration %.3f s (%.4g "
-                 "particle-steps/s)", s.steps, s.n_fluid, s.p.n,
+                 "particle-steps/s)", s.steps_taken, s.n_fluid, s.p.n,
                  fluid_scheme_pair_count(s.scheme), omp_get_max_threads(),
                  s.timers.seconds[s.t_rates], s.timers.seconds[s.t_integrate],
-                 busy > 0.0 ? (double)s.n_fluid * (double)s.steps / busy : 0.0);
+                 busy > 0.0 ? (double)s.n_fluid * (double)s.steps_taken / busy : 0.0);
         log_phases(&s.timers);
         if (s.coupling.n_windows > 0)
             fsi_info("interface: %d windows with solid particles; fluid particles inside the "

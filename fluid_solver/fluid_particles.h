@@ -114,7 +114,9 @@ static inline int fluid_particles_alloc(fluid_particles *p, int n, double spacin
 }
 
 /* Grows or shrinks p to n particles, keeping the first min(n, p->n) and zeroing the
- * new ones. Returns 0, or -1 (p unchanged) when memory runs out or n is negative. */
+ * new ones. Returns 0, or -1 (p unchanged) when memory runs out or n is negative. (A
+ * new field goes into fluid_particles_alloc, _free and _resize here, and into the saved
+ * state: fluid_main.c's save_state and restore_state.) */
 static inline int fluid_particles_resize(fluid_particles *p, int n)
 {
     if (n < 0)

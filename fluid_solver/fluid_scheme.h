@@ -27,6 +27,7 @@
 #include "fluid_particles.h"
 #include "h5_output.h"
 #include "periodic.h"
+#include "state_store.h"
 #include "timers.h"
 
 typedef struct fluid_scheme fluid_scheme;
@@ -127,6 +128,24 @@ void fluid_scheme_use_timers(fluid_scheme *s, fsi_timers *t);
  * is permuted the same way (so that sorting changes only the order of sums). scratch
  * holds n * FSI_DIM doubles. */
 void fluid_scheme_particles_reordered(fluid_scheme *s, const int *sorted, int n, void *scratch);
+
+/* The scheme's state between steps, for implicit coupling (docs/coupling.md): the main
+ * loop saves it with the particles at the start of a coupling window and restores both
+ * when the coupler repeats the window (fluid_main.c, save_state). The state is
+ * complete: from a restore, the same steps with the same solid reproduce the first
+ * attempt bit for bit, on any number of threads (positions, velocities, densities,
+ * pressures, loads). It is everything kept between calls that changes a later result:
+ * an integrator's previous state, a filter that is due, a projection's last pressure
+ * and what it was solved for, the candidate neighbour lists (a list rebuilt at another
+ * step holds the same pairs in another order, which changes the sums' last bits), the
+ * statistics the log reports; not scratch that every call writes before it reads it.
+ * Entries are named "<scheme>.<what>" (core/state_store.h); save clears nothing, so
+ * the main loop's own entries share st. save: 0, or -1 when memory runs out. restore:
+ * p holds the particles saved with the state (the same p->n); 0, or -1 when st lacks
+ * an entry or one has another size (a state of another scheme or case), or memory
+ * runs out. */
+int fluid_scheme_save_state(const fluid_scheme *s, const fluid_particles *p, fsi_state *st);
+int fluid_scheme_restore_state(fluid_scheme *s, fluid_particles *p, const fsi_state *st);
 
 /* Pairs per particle of the last neighbour list (for the performance line). */
 long long fluid_scheme_pair_count(const fluid_scheme *s);

@@ -6,6 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "fluid_state.h"
 #include "lattice_box.h"
 
 int fluid_wall_motion_init(fluid_wall_motion *w, const fluid_geometry *g,
@@ -98,6 +99,21 @@ double fluid_wall_motion_power(const fluid_wall_motion *w, double t, const fluid
     for (int d = 0; d < FSI_DIM; d++)
         power += force[d] * v[d];
     return power;
+}
+
+int fluid_wall_motion_save_state(const fluid_wall_motion *w, fsi_state *st, const char *prefix)
+{
+    return fluid_state_put(st, prefix, "particle", w->particle,
+                           (size_t)w->n_moving * sizeof *w->particle);
+}
+
+int fluid_wall_motion_restore_state(fluid_wall_motion *w, const fsi_state *st,
+                                    const char *prefix)
+{
+    const size_t bytes = (size_t)w->n_moving * sizeof *w->particle;
+    if (bytes == 0)
+        return fluid_state_size(st, prefix, "particle") == 0 ? 0 : -1;
+    return fluid_state_get(st, prefix, "particle", w->particle, bytes);
 }
 
 void fluid_wall_motion_free(fluid_wall_motion *w)

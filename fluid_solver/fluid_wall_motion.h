@@ -10,6 +10,7 @@
 
 #include "fluid_geometry.h"
 #include "fluid_particles.h"
+#include "state_store.h"
 
 typedef struct {
     int n_moving;               /* moving wall particles */
@@ -43,6 +44,12 @@ void fluid_wall_motion_widen(const fluid_wall_motion *w, double *box_min, double
  * laws (then the power is not known from the fluid's rates alone). */
 double fluid_wall_motion_power(const fluid_wall_motion *w, double t, const fluid_particles *p,
                                const double *dv_dt, const double *gravity);
+
+/* The moving wall particles' indices (they follow the particle order) under
+ * "<prefix>.particle", and back. 0, or -1 (memory; restore: no such state). */
+int fluid_wall_motion_save_state(const fluid_wall_motion *w, fsi_state *st, const char *prefix);
+int fluid_wall_motion_restore_state(fluid_wall_motion *w, const fsi_state *st,
+                                    const char *prefix);
 
 void fluid_wall_motion_free(fluid_wall_motion *w);
 

@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "fluid_parallel.h"
+#include "fluid_state.h"
 #include "grow.h"
 #include "permute_rows.h"
 
@@ -41,12 +42,16 @@ static int reserve(fluid_wc_verlet *in, int n)
 {
     if (n <= in->capacity && in->v_prev)
         return 0;
-    const size_t cap = fsi_grown_capacity((size_t)n);
+    const size_t cap = fsi_grown_capacity((size_t)n), old = (size_t)in->capacity;
     int failed = 0;
     in->v_prev = fsi_grow(in->v_prev, cap * FSI_DIM * sizeof(double), &failed);
     in->rho_prev = fsi_grow(in->rho_prev, cap * sizeof(double), &failed);
     if (failed)
         return -1;
+    /* Rows of other particles than fluid ones are never written: zero, so that the
+     * saved state is defined byte for byte. */
+    memset(in->v_prev + old * FSI_DIM, 0, (cap - old) * FSI_DIM * sizeof(double));
+    memset(in->rho_prev + old, 0, (cap - old) * sizeof(double));
     in->capacity = (int)cap;
     return 0;
 }
@@ -88,5 +93,42 @@ int fluid_wc_verlet_step(fluid_wc_verlet *in, fluid_particles *p, double t, doub
     in->have_prev = 1;
     if (hooks->timers)
         fsi_timer_stop(hooks->timers, hooks->integrate_timer);
+    return 0;
+}
+
+/* The scalars of the sequence (no padding: the state is compared byte for byte). */
+typedef struct {
+    double dt_prev;
+    int64_t step, have_prev, n;
+} verlet_header;
+
+int fluid_wc_verlet_save(const fluid_wc_verlet *in, int n, fsi_state *st, const char *prefix)
+{
+    verlet_header h = {in->dt_prev, in->step, in->have_prev, 0};
+    if (in->have_prev)
+        h.n = n < in->capacity ? n : in->capacity;
+    fluid_state_put(st, prefix, "header", &h, sizeof h);
+    if (h.n > 0) {
+        fluid_state_put(st, prefix, "v_prev", in->v_prev, (size_t)h.n * FSI_DIM * sizeof(double));
+        fluid_state_put(st, prefix, "rho_prev", in->rho_prev, (size_t)h.n * sizeof(double));
+    }
+    return st->failed ? -1 : 0;
+}
+
+int fluid_wc_verlet_restore(fluid_wc_verlet *in, const fsi_state *st, const char *prefix)
+{
+    verlet_header h;
+    if (fluid_state_get(st, prefix, "header", &h, sizeof h) != 0 || h.n < 0 || h.n > INT32_MAX)
+        return -1;
+    const int n = (int)h.n;
+    if (n > 0 && (reserve(in, n) != 0 ||
+                  fluid_state_get(st, prefix, "v_prev", in->v_prev,
+                                  (size_t)n * FSI_DIM * sizeof(double)) != 0 ||
+                  fluid_state_get(st, prefix, "rho_prev", in->rho_prev,
+                                  (size_t)n * sizeof(double)) != 0))
+        return -1;
+    in->dt_prev = h.dt_prev;
+    in->step = (long)h.step;
+    in->have_prev = (int)h.have_prev;
     return 0;
 }

@@ -17,6 +17,7 @@
 #define FSI_WC_VERLET_H
 
 #include "fluid_scheme.h"
+#include "state_store.h"
 
 /* DualSPHysics' default VerletSteps. */
 #define FLUID_VERLET_EULER_INTERVAL 40
@@ -45,6 +46,12 @@ void fluid_wc_verlet_permute(fluid_wc_verlet *in, const int *sorted, int n, void
  * (memory: msg; a hook: the owner's message). */
 int fluid_wc_verlet_step(fluid_wc_verlet *in, fluid_particles *p, double t, double dt,
                          const fluid_step_hooks *hooks, char *msg, size_t msg_size);
+
+/* The integrator's state between steps (v^{n-1}, rho^{n-1} of the first n particles,
+ * dt_{n-1}, the step count of the sequence) under "<prefix>.*", and back. 0, or -1
+ * (memory; no such state). */
+int fluid_wc_verlet_save(const fluid_wc_verlet *in, int n, fsi_state *st, const char *prefix);
+int fluid_wc_verlet_restore(fluid_wc_verlet *in, const fsi_state *st, const char *prefix);
 
 void fluid_wc_verlet_free(fluid_wc_verlet *in);
 

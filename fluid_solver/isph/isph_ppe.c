@@ -9,6 +9,7 @@
 #include <string.h>
 
 #include "fluid_parallel.h"
+#include "fluid_state.h"
 #include "grow.h"
 #include "permute_rows.h"
 #include "small_tensor.h"
@@ -399,4 +400,44 @@ void isph_ppe_reordered(isph_ppe *s, const int *sorted, int n, void *scratch)
 {
     if (n <= s->held_capacity && s->held)
         fsi_permute_rows(s->held, sorted, n, 1, scratch);
+}
+
+/* The scalars (no padding: the state is compared byte for byte). */
+typedef struct {
+    int64_t solves, extra_passes, iterations, worst_iterations, pinned, held_rows;
+    double worst_residual;
+} ppe_header;
+
+int isph_ppe_save_state(const isph_ppe *s, fsi_state *st, const char *prefix)
+{
+    const ppe_header h = {s->solves, s->extra_passes, s->iterations, s->worst_iterations,
+                          s->pinned, s->held ? s->held_capacity : 0, s->worst_residual};
+    fluid_state_put(st, prefix, "header", &h, sizeof h);
+    /* Every row the set holds (zero beyond the particles a projection saw): a row past
+     * today's particles is read again when the solid's set grows. */
+    if (h.held_rows > 0)
+        fluid_state_put(st, prefix, "held", s->held, (size_t)h.held_rows);
+    return st->failed ? -1 : 0;
+}
+
+int isph_ppe_restore_state(isph_ppe *s, const fsi_state *st, const char *prefix)
+{
+    ppe_header h;
+    if (fluid_state_get(st, prefix, "header", &h, sizeof h) != 0 || h.held_rows < 0 ||
+        h.held_rows > INT32_MAX)
+        return -1;
+    const int rows = (int)h.held_rows;
+    if (rows > 0 && (reserve_held(s, rows) != 0 ||
+                     fluid_state_get(st, prefix, "held", s->held, (size_t)rows) != 0))
+        return -1;
+    /* Rows the set did not hold then were zero when it grew to them. */
+    if (s->held && s->held_capacity > rows)
+        memset(s->held + rows, 0, (size_t)(s->held_capacity - rows));
+    s->solves = (long)h.solves;
+    s->extra_passes = (long)h.extra_passes;
+    s->iterations = (long long)h.iterations;
+    s->worst_iterations = (int)h.worst_iterations;
+    s->pinned = (int)h.pinned;
+    s->worst_residual = h.worst_residual;
+    return 0;
 }

@@ -38,6 +38,7 @@
 #include "isph_operators.h"
 #include "isph_pairs.h"
 #include "krylov.h"
+#include "state_store.h"
 
 typedef struct {
     fsi_krylov_settings settings;
@@ -76,6 +77,13 @@ void isph_ppe_free(isph_ppe *s);
 int isph_ppe_solve(isph_ppe *s, const isph_pairs *q, fluid_particles *p, const isph_fields *f,
                    const double *u_star, double dt, double rho0, const double *gravity,
                    fsi_krylov_result *res, char *msg, size_t msg_size);
+
+/* The equation's state between projections under "<prefix>.*": the walls held at
+ * p = 0 (the set carries over) and the statistics the log reports. The matrix, the
+ * preconditioner and the warm start (the particles' pressure) are not its state. 0,
+ * or -1 (memory; restore: no such state). */
+int isph_ppe_save_state(const isph_ppe *s, fsi_state *st, const char *prefix);
+int isph_ppe_restore_state(isph_ppe *s, const fsi_state *st, const char *prefix);
 
 /* The first n particles were permuted (fluid_scheme_particles_reordered). */
 void isph_ppe_reordered(isph_ppe *s, const int *sorted, int n, void *scratch);

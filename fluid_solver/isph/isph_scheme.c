@@ -22,6 +22,7 @@
 #include "fluid_parallel.h"
 #include "fluid_phases.h"
 #include "fluid_scheme.h"
+#include "fluid_state.h"
 #include "fluid_step.h"
 #include "grow.h"
 #include "isph_keys.h"
@@ -522,6 +523,68 @@ void fluid_scheme_particles_reordered(fluid_scheme *s, const int *sorted, int n,
     } else {
         s->n_fresh = 0;
     }
+}
+
+/* The scalars of the state (no padding: the state is compared byte for byte). */
+typedef struct {
+    int64_t n_fresh, steps, last_iterations, load_rows;
+    double dt_last, last_residual;
+} isph_header;
+
+/* State between steps: the candidate lists, the Poisson equation's walls held at p = 0
+ * and statistics, the pressure load of the last step on the solid (the solid's inertia
+ * in the next projection; every row, since rows past today's solid particles are read
+ * again when its set grows), the positions and pressures of the last solve or step
+ * (whether the next rates solve again), the last step's length (that solve's) and the
+ * step count. The pressure the solver starts from is the particles'. Pair rows, fields
+ * and forces are rebuilt by every rates call. */
+int fluid_scheme_save_state(const fluid_scheme *s, const fluid_particles *p, fsi_state *st)
+{
+    (void)p;
+    const isph_header h = {s->n_fresh, s->steps, s->last.iterations,
+                           s->last_load ? s->capacity : 0, s->dt_last, s->last.rel_residual};
+    fsi_state_put(st, "isph.header", &h, sizeof h);
+    const size_t vec = FSI_DIM * sizeof(double);
+    if (h.load_rows > 0)
+        fsi_state_put(st, "isph.last_load", s->last_load, (size_t)h.load_rows * vec);
+    if (h.n_fresh > 0) {
+        fsi_state_put(st, "isph.x_fresh", s->x_fresh, (size_t)h.n_fresh * vec);
+        fsi_state_put(st, "isph.p_fresh", s->p_fresh, (size_t)h.n_fresh * sizeof(double));
+    }
+    if (fluid_verlet_save(&s->list, st, "isph.list") != 0 ||
+        isph_ppe_save_state(&s->ppe, st, "isph.ppe") != 0)
+        return -1;
+    return st->failed ? -1 : 0;
+}
+
+int fluid_scheme_restore_state(fluid_scheme *s, fluid_particles *p, const fsi_state *st)
+{
+    isph_header h;
+    if (fsi_state_get(st, "isph.header", &h, sizeof h) != 0 || h.n_fresh < 0 ||
+        h.load_rows < 0 || h.n_fresh > INT32_MAX || h.load_rows > INT32_MAX)
+        return -1;
+    const int rows = (int)(h.load_rows > h.n_fresh ? h.load_rows : h.n_fresh);
+    if (reserve(s, rows > p->n ? rows : p->n) != 0)
+        return -1;
+    const size_t vec = FSI_DIM * sizeof(double);
+    /* last_load: the saved rows, zero beyond (as a growth leaves them) */
+    memset(s->last_load, 0, (size_t)s->capacity * vec);
+    if ((h.load_rows > 0 &&
+         fsi_state_get(st, "isph.last_load", s->last_load, (size_t)h.load_rows * vec) != 0) ||
+        (h.n_fresh > 0 &&
+         (fsi_state_get(st, "isph.x_fresh", s->x_fresh, (size_t)h.n_fresh * vec) != 0 ||
+          fsi_state_get(st, "isph.p_fresh", s->p_fresh, (size_t)h.n_fresh * sizeof(double)) != 0)) ||
+        fluid_verlet_restore(&s->list, st, "isph.list") != 0 ||
+        isph_ppe_restore_state(&s->ppe, st, "isph.ppe") != 0)
+        return -1;
+    s->n_fresh = (int)h.n_fresh;
+    s->steps = (long)h.steps;
+    s->dt_last = h.dt_last;
+    s->last = (fsi_krylov_result){.iterations = (int)h.last_iterations,
+                                  .rel_residual = h.last_residual,
+                                  .converged = 1,
+                                  .reason = "converged"};
+    return 0;
 }
 
 long long fluid_scheme_pair_count(const fluid_scheme *s)

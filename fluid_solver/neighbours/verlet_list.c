@@ -3,9 +3,11 @@
 
 #include <math.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "grow.h"
 #include "fluid_parallel.h"
+#include "fluid_state.h"
 
 void fluid_verlet_init(fluid_verlet *v)
 {
@@ -145,4 +147,71 @@ int fluid_verlet_update(fluid_verlet *v, const fluid_particles *p, double suppor
         fluid_verlet_build(v, &v->grid, p, support + skin, 1) != 0)
         return -1;
     return 1;
+}
+
+/* The scalars of the lists (no padding: the state is compared and written byte for
+ * byte). */
+typedef struct {
+    int64_t n, builds, periodic_on[FSI_DIM];
+    double radius, support, skin, periodic_lo[FSI_DIM], periodic_length[FSI_DIM];
+} verlet_header;
+
+int fluid_verlet_save(const fluid_verlet *v, fsi_state *st, const char *prefix)
+{
+    verlet_header h;
+    memset(&h, 0, sizeof h);
+    h.n = v->builds > 0 ? v->n : 0;
+    h.builds = v->builds > 0 ? v->builds : 0;
+    h.radius = v->radius;
+    h.support = v->support;
+    h.skin = v->skin;
+    for (int d = 0; d < FSI_DIM; d++) {
+        h.periodic_on[d] = v->periodic.on[d];
+        h.periodic_lo[d] = v->periodic.lo[d];
+        h.periodic_length[d] = v->periodic.length[d];
+    }
+    fluid_state_put(st, prefix, "header", &h, sizeof h);
+    if (h.builds > 0) {
+        const size_t n = (size_t)v->n;
+        fluid_state_put(st, prefix, "offset", v->offset, (n + 1) * sizeof *v->offset);
+        fluid_state_put(st, prefix, "candidate", v->candidate,
+                        (size_t)v->offset[n] * sizeof *v->candidate);
+        fluid_state_put(st, prefix, "idle", v->idle, n * sizeof *v->idle);
+        fluid_state_put(st, prefix, "x_built", v->x_built, n * FSI_DIM * sizeof *v->x_built);
+    }
+    return st->failed ? -1 : 0;
+}
+
+int fluid_verlet_restore(fluid_verlet *v, const fsi_state *st, const char *prefix)
+{
+    verlet_header h;
+    if (fluid_state_get(st, prefix, "header", &h, sizeof h) != 0 || h.n < 0 || h.n > INT32_MAX)
+        return -1;
+    v->radius = h.radius;
+    v->support = h.support;
+    v->skin = h.skin;
+    for (int d = 0; d < FSI_DIM; d++) {
+        v->periodic.on[d] = (int)h.periodic_on[d];
+        v->periodic.lo[d] = h.periodic_lo[d];
+        v->periodic.length[d] = h.periodic_length[d];
+    }
+    if (h.builds == 0) {
+        v->builds = 0;      /* the next update rebuilds, as it would have */
+        return 0;
+    }
+    const int n = (int)h.n;
+    const size_t pairs = fluid_state_size(st, prefix, "candidate");
+    if (pairs == (size_t)-1 || reserve(v, n, (int64_t)(pairs / sizeof *v->candidate)) != 0 ||
+        fluid_state_get(st, prefix, "offset", v->offset, ((size_t)n + 1) * sizeof *v->offset) != 0 ||
+        fluid_state_get(st, prefix, "candidate", v->candidate, pairs) != 0 ||
+        fluid_state_get(st, prefix, "idle", v->idle, (size_t)n * sizeof *v->idle) != 0 ||
+        fluid_state_get(st, prefix, "x_built", v->x_built,
+                        (size_t)n * FSI_DIM * sizeof *v->x_built) != 0) {
+        v->n = 0;
+        v->builds = 0;
+        return -1;
+    }
+    v->n = n;
+    v->builds = h.builds;
+    return 0;
 }

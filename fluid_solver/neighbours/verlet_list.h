@@ -29,6 +29,7 @@
 
 #include "fluid_particles.h"
 #include "neighbour_grid.h"
+#include "state_store.h"
 
 /* Default skin as a fraction of the support ([fluid.ulph] neighbour_skin). With h = 1.2 dx,
  * delta = 3 h, a skin of 0.1 delta holds 1.21 times the pairs within the support and
@@ -71,5 +72,15 @@ void fluid_verlet_invalidate(fluid_verlet *v);
  * radius support + skin, idle walls pruned. Returns 1 when rebuilt, 0 when kept, -1
  * when a position is not finite or memory runs out. */
 int fluid_verlet_update(fluid_verlet *v, const fluid_particles *p, double support, double skin);
+
+/* The lists as state (fluid_scheme_save_state): the candidates, idle flags, positions at
+ * the build and the build's radius, support and skin under "<prefix>.*". Saved rather
+ * than marked stale: a list rebuilt at another step than the first attempt's lists the
+ * same pairs in another order, and the sums over them then differ in the last bits.
+ * The grid is not state (a rebuild makes it anew). 0, or -1 when memory runs out. */
+int fluid_verlet_save(const fluid_verlet *v, fsi_state *st, const char *prefix);
+
+/* The lists saved under prefix back, exactly. 0, or -1 (no such state, or memory). */
+int fluid_verlet_restore(fluid_verlet *v, const fsi_state *st, const char *prefix);
 
 #endif

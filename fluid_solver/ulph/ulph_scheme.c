@@ -41,6 +41,7 @@ struct fluid_scheme {
     ulph_momentum_params momentum;
     fluid_verlet list;
     double skin;                /* of the candidate lists [m] */
+    int rows_stale;             /* the lists were restored: derive the rows again */
     ulph_operators ops;
     ulph_momentum_scratch scratch;
     const unsigned char *free_slip;
@@ -273,13 +274,15 @@ int fluid_scheme_rates(fluid_scheme *s, fluid_particles *p, double *drho_dt, dou
     fluid_phase_stop(&s->phases, PHASE_SEARCH);
     fluid_phase_start(&s->phases, PHASE_OPERATORS);
     const int rc = built < 0 ? -1
-                             : ulph_operators_update_list(&s->ops, &s->kernel, &s->list, p, built);
+                             : ulph_operators_update_list(&s->ops, &s->kernel, &s->list, p,
+                                                          built || s->rows_stale);
     fluid_phase_stop(&s->phases, PHASE_OPERATORS);
     if (rc != 0) {
         snprintf(msg, msg_size, "cannot build the neighbour lists of %d particles (a "
                  "position is not finite, or memory ran out)", p->n);
         return -1;
     }
+    s->rows_stale = 0;
     fluid_phase_start(&s->phases, PHASE_WALLS);
     ghost_walls_update(&s->ops.rows, &s->ops.periodic, &s->eos, s->momentum.gravity,
                        s->free_slip, p, s->velocity_for_viscosity);
@@ -349,6 +352,32 @@ int fluid_scheme_write_fields(const fluid_scheme *s, fsi_h5_writer *out)
     int rc = fsi_h5_write_field_int(out, "singular_shape", flags, 1);
     free(flags);
     return rc;
+}
+
+/* State between steps: the density filter when it is due, the candidate lists (the
+ * operators' rows are derived from them again, as after a build), the Verlet
+ * integrator's previous state. The predictor-corrector keeps none. */
+int fluid_scheme_save_state(const fluid_scheme *s, const fluid_particles *p, fsi_state *st)
+{
+    const int64_t due = s->filter_due;
+    fsi_state_put(st, "ulph.filter_due", &due, sizeof due);
+    if (fluid_verlet_save(&s->list, st, "ulph.list") != 0 ||
+        fluid_wc_verlet_save(&s->verlet_integrator, p->n, st, "ulph.verlet") != 0)
+        return -1;
+    return st->failed ? -1 : 0;
+}
+
+int fluid_scheme_restore_state(fluid_scheme *s, fluid_particles *p, const fsi_state *st)
+{
+    (void)p;
+    int64_t due;
+    if (fsi_state_get(st, "ulph.filter_due", &due, sizeof due) != 0 ||
+        fluid_verlet_restore(&s->list, st, "ulph.list") != 0 ||
+        fluid_wc_verlet_restore(&s->verlet_integrator, st, "ulph.verlet") != 0)
+        return -1;
+    s->filter_due = (int)due;
+    s->rows_stale = 1;
+    return 0;
 }
 
 long long fluid_scheme_pair_count(const fluid_scheme *s)

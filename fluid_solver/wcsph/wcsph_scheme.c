@@ -40,6 +40,7 @@ struct fluid_scheme {
     wcsph_params prm;
     fluid_verlet list;
     double skin;                /* of the candidate lists [m] */
+    int rows_stale;             /* the lists were restored: derive the rows again */
     fluid_rows rows;
     wcsph_scratch scratch;
     const unsigned char *free_slip;
@@ -191,13 +192,16 @@ int fluid_scheme_rates(fluid_scheme *s, fluid_particles *p, double *drho_dt, dou
     const int built = fluid_verlet_update(&s->list, p, s->kernel.support, s->skin);
     fluid_phase_stop(&s->phases, PHASE_SEARCH);
     fluid_phase_start(&s->phases, PHASE_ROWS);
-    const int rc = built < 0 ? -1 : built > 0 ? fluid_rows_build(&s->rows, &s->list, p, 0) : 0;
+    const int rc = built < 0                     ? -1
+                   : built > 0 || s->rows_stale ? fluid_rows_build(&s->rows, &s->list, p, 0)
+                                                 : 0;
     if (rc != 0) {
         fluid_phase_stop(&s->phases, PHASE_ROWS);
         snprintf(msg, msg_size, "cannot build the neighbour lists of %d particles (a "
                  "position is not finite, or memory ran out)", p->n);
         return -1;
     }
+    s->rows_stale = 0;
     wcsph_pairs(&s->rows, &s->kernel,
                 fsi_periodic_any(&s->list.periodic) ? &s->list.periodic : NULL, p);
     fluid_phase_stop(&s->phases, PHASE_ROWS);
@@ -252,6 +256,27 @@ int fluid_scheme_write_fields(const fluid_scheme *s, fsi_h5_writer *out)
 {
     (void)s;
     (void)out; /* no fields of its own */
+    return 0;
+}
+
+/* State between steps: the candidate lists (the rows are derived from them again, as
+ * after a build) and the Verlet integrator's previous state; the predictor-corrector
+ * keeps none, and delta-SPH has no filter. */
+int fluid_scheme_save_state(const fluid_scheme *s, const fluid_particles *p, fsi_state *st)
+{
+    if (fluid_verlet_save(&s->list, st, "wcsph.list") != 0 ||
+        fluid_wc_verlet_save(&s->verlet_integrator, p->n, st, "wcsph.verlet") != 0)
+        return -1;
+    return st->failed ? -1 : 0;
+}
+
+int fluid_scheme_restore_state(fluid_scheme *s, fluid_particles *p, const fsi_state *st)
+{
+    (void)p;
+    if (fluid_verlet_restore(&s->list, st, "wcsph.list") != 0 ||
+        fluid_wc_verlet_restore(&s->verlet_integrator, st, "wcsph.verlet") != 0)
+        return -1;
+    s->rows_stale = 1;
     return 0;
 }
 
