@@ -551,7 +551,8 @@ static int make_dir(const char *path)
 static int library_state(const fsi_participant *p, fsi_state *st)
 {
     fsi_state_clear(st);
-    int rc = fsi_state_put(st, "library.dt_prev", &p->dt_prev, sizeof p->dt_prev) |
+    int rc = fsi_state_put(st, "library.window", &p->window, sizeof p->window) |
+             fsi_state_put(st, "library.dt_prev", &p->dt_prev, sizeof p->dt_prev) |
              fsi_state_put(st, "library.probe_values", p->probe_values,
                            (size_t)p->n_probes * sizeof(double));
     if (p->implicit_solid)
@@ -626,12 +627,20 @@ static int read_restart(fsi_participant *p)
 static int apply_restart(fsi_participant *p)
 {
     const fsi_state *own = &p->restart_library;
-    if (fsi_state_get(own, "library.dt_prev", &p->dt_prev, sizeof p->dt_prev) == 0 &&
+    int window;
+    if (fsi_state_get(own, "library.window", &window, sizeof window) == 0 &&
+        fsi_state_get(own, "library.dt_prev", &p->dt_prev, sizeof p->dt_prev) == 0 &&
         fsi_state_get(own, "library.probe_values", p->probe_values,
                       (size_t)p->n_probes * sizeof(double)) == 0 &&
         (!p->implicit_solid ||
-         fsi_accel_restore(p->implicit_solid->accel, own, "library.accel.") == 0))
+         fsi_accel_restore(p->implicit_solid->accel, own, "library.accel.") == 0)) {
+        /* As if window K - 1 had just ended: the first grant expected, and asked for
+         * again when it is lost, is K's (a participant that starts at -1 would ask for
+         * window 0). */
+        p->window = window - 1;
+        p->dt = p->dt_prev;
         return 0;
+    }
     fsi_abort(p, "restart: the checkpoint's %s.library.state does not match this "
               "participant (its probes or the coupling scheme differ from the run that wrote "
               "it)", p->name);

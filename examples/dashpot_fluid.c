@@ -74,14 +74,28 @@ int main(void)
     loads l = {0};
     fsi_interface solid;
     dashpot_state state = {0}, saved = {0};
+    fsi_state on_disk = {0};
+    /* A run restarted from a coupled checkpoint goes on from its state. */
+    if (fsi_restart_state(p) &&
+        fsi_state_get(fsi_restart_state(p), "dashpot", &state, sizeof state) != 0) {
+        fsi_abort(p, "the checkpoint holds no dashpot state");
+        return fsi_close(p, NULL);
+    }
 
     while (fsi_ongoing(p)) {
         /* Implicit coupling: back to the window's start when it is repeated; saved at
-         * its first iteration. */
+         * its first iteration, and written when the coupler takes a checkpoint. */
         if (fsi_requires_reading_checkpoint(p))
             state = saved;
-        if (fsi_requires_writing_checkpoint(p))
+        if (fsi_requires_writing_checkpoint(p)) {
             saved = state;
+            fsi_state_clear(&on_disk);
+            if (fsi_state_put(&on_disk, "dashpot", &saved, sizeof saved) != 0 ||
+                fsi_write_checkpoint(p, &on_disk) != 0) {
+                fsi_abort(p, "cannot write the checkpoint of window %d", fsi_window_index(p));
+                break;
+            }
+        }
         fsi_read_interface(p, &solid);
         if (loads_reserve(&l, solid.n) != 0) {
             fsi_abort(p, "out of memory for %d interface particles", solid.n);
@@ -113,6 +127,7 @@ int main(void)
     }
     fsi_info("loads sent: impulse %.9g N s (y) in %ld windows", state.impulse_y, state.windows);
     fsi_h5_close(out);
+    fsi_state_free(&on_disk);
     free(l.force);
     free(l.pressure);
     return fsi_close(p, &timers);

@@ -765,12 +765,12 @@ static int save_state(fluid_run *s)
     return 0;
 }
 
-/* The state save_state saved, back: the run goes on as from the start of the window it
- * was saved at, bit for bit, once the window's start has put the solid's particles in
- * the tail again (the moving boundary, fluid_coupling_receive). 0, or -1 with s->msg. */
-static int restore_state(fluid_run *s)
+/* A state save_state saved (s->saved, or a checkpoint's), back: the run goes on as from
+ * the start of the window it was saved at, bit for bit, once the window's start has put
+ * the solid's particles in the tail again (the moving boundary, fluid_coupling_receive).
+ * 0, or -1 with s->msg. */
+static int restore_state(fluid_run *s, const fsi_state *st)
 {
-    const fsi_state *st = &s->saved;
     fluid_particles *p = &s->p;
     run_header h;
     if (fsi_state_get(st, "run.header", &h, sizeof h) != 0 || h.n_fixed != s->n_fixed ||
@@ -851,6 +851,12 @@ int main(void)
         free_run(&s);
         return FSI_EXIT_RUN_FAILURE;
     }
+    /* A restarted run goes on from the checkpoint's state (docs/checkpoints.md). */
+    if (fsi_restart_state(part) && restore_state(&s, fsi_restart_state(part)) != 0) {
+        fsi_abort(part, "restart: %s", s.msg);
+        free_run(&s);
+        return FSI_EXIT_RUN_FAILURE;
+    }
 
     while (fsi_ongoing(part)) {
         double dt = fsi_window(part), t0 = fsi_time(part);
@@ -863,9 +869,14 @@ int main(void)
 
         /* Implicit coupling: the state at the window's start, saved at its first
          * iteration and restored whenever the coupler repeats the window. */
-        if ((fsi_requires_reading_checkpoint(part) && restore_state(&s) != 0) ||
+        if ((fsi_requires_reading_checkpoint(part) && restore_state(&s, &s.saved) != 0) ||
             (fsi_requires_writing_checkpoint(part) && save_state(&s) != 0)) {
             fsi_abort(part, "%s: %s", s.window, s.msg);
+            break;
+        }
+        /* A coupled checkpoint is this state on disk (docs/checkpoints.md). */
+        if (fsi_requires_writing_checkpoint(part) && fsi_write_checkpoint(part, &s.saved) != 0) {
+            fsi_abort(part, "%s: cannot write the fluid's checkpoint", s.window);
             break;
         }
         fsi_timer_start(&s.timers, s.t_exchange);

@@ -4,7 +4,9 @@
 # frame of fluid.h5 and solid.h5 compared with h5diff, probes.csv and coupling.csv with
 # cmp), as the same run never interrupted.
 # The scene is test_solver_combinations': C1 with the water against the plate, 0.004 s,
-# frames every 0.001 s, a checkpoint at each (--checkpoint-interval 0.001).
+# frames every 0.001 s, a checkpoint at each (--checkpoint-interval 0.001), windows of at
+# most 2e-4 s (with ISPH's own 1e-3 s windows ISPH + NOSB-PD is unstable on this scene,
+# explicit or in the first iteration of an implicit window: test_solver_combinations).
 #   (a) every fluid x solid combination the registry lists, explicit coupling, the solid
 #       killed (test switch FSI_TEST_KILL, SIGKILL) at three quarters of the run's windows;
 #   (b) the same with implicit coupling (IQN-ILS, whose history of earlier windows is part
@@ -20,7 +22,7 @@
 source "$(dirname "$0")/lib.sh"
 PY=/usr/bin/python3
 CASE="$FSI_SOURCE_DIR/cases/c1_elastic_plate.ini"
-SCENE=(--threads 1 --set run.end_time=0.004 --set run.output_interval=0.001
+SCENE=(--threads 1 --set run.end_time=0.004 --set run.output_interval=0.001 --set run.max_window=2e-4
        --set "fluid.block water.min=0.148,0" --set "fluid.block water.max=0.292,0.292"
        --checkpoint-interval 0.001)
 
@@ -42,7 +44,7 @@ interrupted_same() {
       >"$name.killed.txt" 2>&1; then
     echo "$name: the run killed at window $k finished"; return 1
   fi
-  "$FSI_RUN" --restart "$name" --threads 1 >"$name.restart.txt" 2>&1 ||
+  "$FSI_BIN_DIR/fsi-run" --restart "$name" --threads 1 >"$name.restart.txt" 2>&1 ||
     { tail -5 "$name.restart.txt"; echo "$name: the restart failed"; return 1; }
   grep -q "restart from .*window_" "$name/run.log" || { echo "$name: run.log names no restart"; return 1; }
   (same_results "$name.whole" "$name") || return 1
@@ -51,7 +53,7 @@ interrupted_same() {
       { echo "$name: coupling.csv differs"; return 1; }
   fi
   output_readable "$name" fluid solid || { echo "$name: output not readable"; return 1; }
-  echo "$name: killed at window $k of $(windows_of "$name.whole"), restarted from $(grep -o 'window_[0-9]*' "$name/run.log" | tail -1): same output"
+  echo "$name: killed at window $k of $(windows_of "$name.whole"), restarted from $(grep -o 'window_[0-9][0-9]*' "$name/run.log" | tail -1): same output"
 }
 
 failed=""
@@ -93,7 +95,7 @@ kill -9 $pid
 wait $pid 2>/dev/null || true
 sleep 0.5
 [ -z "$(run_pids hard 2>/dev/null)" ] || fail "processes of the killed run are still alive"
-"$FSI_RUN" --restart hard --threads 1 >hard.restart.txt 2>&1 || { tail -5 hard.restart.txt; fail "restart after kill -9 of fsi run"; }
+"$FSI_BIN_DIR/fsi-run" --restart hard --threads 1 >hard.restart.txt 2>&1 || { tail -5 hard.restart.txt; fail "restart after kill -9 of fsi run"; }
 "$FSI_RUN" "$CASE" --out hard.whole "${SCENE[@]}" --set run.end_time=0.02 >hard.whole.txt 2>&1 ||
   fail "the uninterrupted run"
 same_results hard.whole hard
@@ -101,19 +103,19 @@ pass "kill -9 of fsi run, restarted: the same output as the uninterrupted run"
 
 # (e) refusals
 mkdir -p empty
-"$FSI_RUN" --restart empty >refuse1.txt 2>&1 && fail "--restart of a folder without a checkpoint ran"
+"$FSI_BIN_DIR/fsi-run" --restart empty >refuse1.txt 2>&1 && fail "--restart of a folder without a checkpoint ran"
 [ $? -eq 2 ] || true
 grep -q "no complete checkpoint\|cannot open case file" refuse1.txt || { cat refuse1.txt; fail "no message for a folder without a checkpoint"; }
 cp -r crack other
 latest=$(ls -d other/checkpoints/window_* | tail -1)
 sed -i 's/^version = .*/version = 0.0-elsewhere/' "$latest/COMPLETE"
 set +e
-"$FSI_RUN" --restart other >refuse2.txt 2>&1
+"$FSI_BIN_DIR/fsi-run" --restart other >refuse2.txt 2>&1
 rc=$?
 set -e
 [ $rc -eq 2 ] && grep -q "version 0.0-elsewhere" refuse2.txt || { cat refuse2.txt; fail "a checkpoint of another version was not refused (exit $rc)"; }
 set +e
-"$FSI_RUN" "$CASE" --restart crack >refuse3.txt 2>&1
+"$FSI_BIN_DIR/fsi-run" "$CASE" --restart crack >refuse3.txt 2>&1
 rc=$?
 set -e
 [ $rc -eq 2 ] || { cat refuse3.txt; fail "--restart with a case beside it: exit $rc"; }
@@ -121,7 +123,7 @@ cp -r crack cut
 latest=$(ls -d cut/checkpoints/window_* | tail -1)
 truncate -s -100 "$latest/solid.state"
 set +e
-"$FSI_RUN" --restart cut >refuse4.txt 2>&1
+"$FSI_BIN_DIR/fsi-run" --restart cut >refuse4.txt 2>&1
 rc=$?
 set -e
 [ $rc -ne 0 ] && grep -q "solid.state" refuse4.txt cut/solid.log ||
