@@ -21,6 +21,15 @@ AXIS_LABEL = {"density": "solid / fluid density ratio", "stiffness": "E / 67.5 G
               "safety": "step factors / defaults"}
 
 
+def label(row):
+    """ulph_nosbpd_plain -> "ulph + nosbpd, explicit without impedance"."""
+    for tail, words in (("_serial_staggered", ", explicit"),
+                        ("_plain", ", explicit without impedance"), ("_implicit", ", implicit")):
+        if row.endswith(tail):
+            row = row[: -len(tail)] + words
+    return row.replace("_", " + ", 1)
+
+
 def stop_reason(run):
     """The coupler's failure line of run.log, shortened, or None for a finished run."""
     why = fsi_results.log_match(os.path.join(run, "run.log"), r"coupler_exit = failure: (.*)")
@@ -75,8 +84,7 @@ def main():
         md.write("| combination, coupling | " + " | ".join("%g" % v for v in values) + " |\n")
         md.write("| --- |" + " --- |" * len(values) + "\n")
         for row in rows:
-            md.write("| %s | " % row.replace("_serial_staggered", ", explicit")
-                     .replace("_implicit", ", implicit").replace("_", " + ", 1))
+            md.write("| %s | " % label(row))
             md.write(" | ".join(text(at[(row, v)]) if (row, v) in at else "" for v in values))
             md.write(" |\n")
         md.write("\n%s across; ok = settled mid-span deflection within %.0f %% of 2D "
@@ -97,17 +105,16 @@ def main():
             if not c:
                 continue
             ax.add_patch(plt.Rectangle((j, i), 1, 1, color=colour[c["state"]]))
-            label = "%.1f it" % float(c["iterations"]) if c["iterations"] else ""
+            text_in = "%.1f it" % float(c["iterations"]) if c["iterations"] else ""
             if c["state"] != "stopped":
-                label = ("%+.0f%%" % (100 * c["error"])) + ("\n" + label if label else "")
-            ax.text(j + 0.5, i + 0.5, label, ha="center", va="center", fontsize=7)
+                text_in = ("%+.0f%%" % (100 * c["error"])) + ("\n" + text_in if text_in else "")
+            ax.text(j + 0.5, i + 0.5, text_in, ha="center", va="center", fontsize=7)
     ax.set_xlim(0, len(values))
     ax.set_ylim(0, len(rows))
     ax.set_xticks([j + 0.5 for j in range(len(values))])
     ax.set_xticklabels(["%g" % v for v in values])
     ax.set_yticks([i + 0.5 for i in range(len(rows))])
-    ax.set_yticklabels([r.replace("_serial_staggered", ", explicit").replace("_implicit", ", implicit")
-                        .replace("_", " + ", 1) for r in rows], fontsize=8)
+    ax.set_yticklabels([label(r) for r in rows], fontsize=8)
     ax.set_xlabel(AXIS_LABEL.get(a.axis, a.axis))
     ax.set_title("C4, 0.5 m of water, T/dx = 4: green stable, yellow > %.0f %% off, red stopped"
                  % (100 * ACCURATE), fontsize=9)

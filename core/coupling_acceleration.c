@@ -150,6 +150,12 @@ int fsi_accel_begin_window(fsi_accel *a, int n, int ncomp, const int32_t *id)
     return changed;
 }
 
+void fsi_accel_drop_history(fsi_accel *a)
+{
+    if (!a->in_window)
+        a->columns = 0;
+}
+
 void fsi_accel_end_window(fsi_accel *a)
 {
     if (!a->in_window)

@@ -85,6 +85,9 @@ void fsi_accel_end_window(fsi_accel *a);
  * constant, omega0; Aitken, omega_i; IQN-ILS, omega0 after a relaxed step, 0 after a
  * quasi-Newton step. */
 int fsi_accel_columns(const fsi_accel *a);
+/* Drops every secant pair kept from earlier windows (call before fsi_accel_begin_window):
+ * the map they describe has changed (another window length, for one). */
+void fsi_accel_drop_history(fsi_accel *a);
 double fsi_accel_last_omega(const fsi_accel *a);
 
 /* Everything the acceleration carries from one window to the next (the ids, the

@@ -41,6 +41,7 @@ typedef struct {
     int n, capacity;
     int iteration;          /* of the motion in u_in */
     double dt, dt_prev;
+    double history_dt;      /* the window length the acceleration's history is of */
     int32_t *id;            /* the window's particles, in the order sent */
     double *x_start;        /* their positions at t_k */
     double *u_prev;         /* the last window's mean velocities (sent as velocity) */

@@ -58,6 +58,11 @@ static const fsi_key_spec common_keys[] = {
      "derived [fluid] support) less half a fluid spacing, and a smaller value than that "
      "is refused; a fluid without a support (an example or external fluid) leaves only "
      "the horizon-cut points unless it is given (docs/coupling.md, Unequal spacings)."},
+    {"interface_impedance", FSI_KEY_BOOL, "-", "true", 0, 0, 0, NULL,
+     "Answer for the fluid inside a coupling window: the load is corrected by the fluid's "
+     "impedance times the particle's departure from the motion the fluid was given "
+     "(docs/coupling.md, The fluid's answer inside the window); false holds the fluid's load "
+     "as received, the plain serial-staggered scheme (for stability maps: docs/stability.md)."},
     {"energy_growth_limit", FSI_KEY_REAL, "-", "2", FSI_BOUND_MIN_OPEN, 1, 0, NULL,
      "The run stops as unstable when kinetic plus strain energy exceeds this factor times "
      "(initial energy + the work the loads, gravity and fluid have put in); a stable run "

@@ -62,6 +62,7 @@ typedef struct {
     int rk4;                        /* [solid] integrator = rk4 */
     solid_rk4_state rk4_state;
     double safety, energy_limit;
+    int interface_impedance;        /* [solid] interface_impedance */
     double *f_int, *f_ext, *f_ext_prev, *f_fluid, *p_fluid, *x_prev, *scratch;
     double *interface_damping;      /* per particle: z A / m [1/s] (solid_interface.h) */
     double *f_held;                 /* the force held over the window: the fluid's load
@@ -232,6 +233,7 @@ static int setup(solid_run *s, fsi_participant *part)
 
     s->safety = fsi_case_get_real(c, ROLE, "time_step_safety", 0.8);
     s->energy_limit = fsi_case_get_real(c, ROLE, "energy_growth_limit", 2.0);
+    s->interface_impedance = fsi_case_get_bool(c, ROLE, "interface_impedance", 1);
     s->integrator.damping = fsi_case_get_real(c, ROLE, "damping", 0.0);
     if (fsi_case_get_vector(c, ROLE, "gravity", s->integrator.gravity) != 0)
         memset(s->integrator.gravity, 0, sizeof s->integrator.gravity);
@@ -389,7 +391,8 @@ static int exchange(solid_run *s, fsi_participant *part)
     if (solid_interface_take(&s->iface, &loads, &s->p, s->f_fluid, s->p_fluid, s->msg,
                              sizeof s->msg) != 0)
         return -1;
-    solid_interface_damping(&s->iface, &s->p, s->f_fluid, loads.impedance,
+    solid_interface_damping(&s->iface, &s->p, s->f_fluid,
+                            s->interface_impedance ? loads.impedance : 0.0,
                             s->interface_damping);
     hold_interface_force(s);
     return 0;
