@@ -108,8 +108,8 @@ int implicit_solid_motion(implicit_solid *s, int iteration, double dt, double dt
             fsi_accel_drop_history(s->accel);
         s->history_dt = dt;
         int restarted = fsi_accel_begin_window(s->accel, d->n, FSI_DIM, d->id);
-        if (restarted >= 0)
-            restarted |= length_changed;
+        if (restarted >= 0)     /* 1: another interface set, 2: another length */
+            restarted = restarted | (length_changed ? 2 : 0);
         if (restarted < 0) {
             snprintf(msg, msg_size, "out of memory for the coupling acceleration");
             return -1;

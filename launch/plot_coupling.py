@@ -28,7 +28,7 @@ def main():
     t = [float(r["time"]) for r in rows]
     it = [int(float(r["iteration"])) for r in rows]
     accepted = [(float(r["time"]), int(float(r["iteration"])) + 1, r["converged"] == "1",
-                 r["history_restarted"] == "1") for r in rows if r["accepted"] == "1"]
+                 int(float(r["history_restarted"])) & 1) for r in rows if r["accepted"] == "1"]
     fig, (a, b) = plt.subplots(2, 1, figsize=(8, 6), sharex=True)
     a.step([x[0] for x in accepted], [x[1] for x in accepted], where="post", lw=1)
     bad = [x for x in accepted if not x[2]]
