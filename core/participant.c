@@ -76,6 +76,11 @@ struct fsi_participant {
     int next_flags, next_frame;
 
     interface_slot other;
+    /* The other side's data for a later grant (an implicit run's next iteration, or the
+     * next window), arriving while this side still works on the current one: kept
+     * apart so that what fsi_read_interface() handed out stays valid until the next
+     * fsi_ongoing(), which moves it in. */
+    interface_slot pending;
 
     /* Solid: what it published this window, for the velocity handed back with the
      * loads (the impedance's reference) and to match loads by id: ids in sent order,
@@ -168,17 +173,28 @@ static int key_after(int w1, int i1, int w0, int i0)
     return w1 > w0 || (w1 == w0 && i1 > i0);
 }
 
+/* Where data of (window, iteration) goes: the current slot, or the pending one when it
+ * belongs to a later grant than the current; NULL when it is older than what that slot
+ * holds. */
+static interface_slot *slot_for(fsi_participant *p, int window, int iteration)
+{
+    interface_slot *s =
+        key_after(window, iteration, p->window, p->iteration) ? &p->pending : &p->other;
+    return key_after(window, iteration, s->window, s->iteration) ? s : NULL;
+}
+
 static void take_solid_state(fsi_participant *p, const fsi_solid_state_t *m)
 {
-    if (strcmp(p->role, "fluid") != 0 ||
-        !key_after(m->header.window, m->header.iteration, p->other.window, p->other.iteration))
+    interface_slot *s = strcmp(p->role, "fluid") == 0
+                            ? slot_for(p, m->header.window, m->header.iteration)
+                            : NULL;
+    if (!s)
         return;
     if (!valid_interface_size(m->n, m->dim, m->n_components)) {
         fsi_warn("ignored solid_state of window %d: dim %d, n %d, %d components", m->header.window,
                  m->dim, m->n, m->n_components);
         return;
     }
-    interface_slot *s = &p->other;
     grow_slot(s, m->n);
     s->window = m->header.window;
     s->iteration = m->header.iteration;
@@ -194,15 +210,16 @@ static void take_solid_state(fsi_participant *p, const fsi_solid_state_t *m)
 
 static void take_fluid_load(fsi_participant *p, const fsi_fluid_load_t *m)
 {
-    if (strcmp(p->role, "solid") != 0 ||
-        !key_after(m->header.window, m->header.iteration, p->other.window, p->other.iteration))
+    interface_slot *s = strcmp(p->role, "solid") == 0
+                            ? slot_for(p, m->header.window, m->header.iteration)
+                            : NULL;
+    if (!s)
         return;
     if (!valid_interface_size(m->n, m->dim, m->n_components)) {
         fsi_warn("ignored fluid_load of window %d: dim %d, n %d, %d components", m->header.window,
                  m->dim, m->n, m->n_components);
         return;
     }
-    interface_slot *s = &p->other;
     grow_slot(s, m->n);
     s->window = m->header.window;
     s->iteration = m->header.iteration;
@@ -369,6 +386,7 @@ fsi_participant *fsi_open(const char *name, const char *role, const char *case_p
     p->window = -1;
     p->next_window = -1;
     p->other.window = -1;
+    p->pending.window = -1;
     p->implicit = fsi_case_choice_is(p->case_file, "run", "scheme", "implicit");
     p->window_complete = 1;
     if (p->implicit && strcmp(role, "solid") == 0) {
@@ -490,6 +508,11 @@ int fsi_ongoing(fsi_participant *p)
     p->window = p->next_window;
     p->iteration = p->next_iteration;
     p->checkpoint_written = 0;
+    if (p->pending.window == p->window && p->pending.iteration == p->iteration) {
+        const interface_slot swap = p->other;
+        p->other = p->pending;
+        p->pending = swap;
+    }
     p->t = p->next_t;
     p->dt = p->next_dt;
     p->flags = p->next_flags;
@@ -1019,6 +1042,7 @@ int fsi_close(fsi_participant *p, const fsi_timers *timers)
     fsi_bus_close(p->bus);
     fsi_case_free(p->case_file);
     free_slot(&p->other);
+    free_slot(&p->pending);
     free(p->sent_id);
     free(p->sent_velocity);
     free(p->sent_order);
