@@ -334,51 +334,55 @@ typedef struct {
     double omega;
 } saved_counters;
 
-static void entry_name(char *out, size_t size, const char *prefix, const char *what)
+enum { ARRAY_FIELDS = 7 };
+
+/* The arrays of a as fields "<prefix><array>" (names in names[ARRAY_FIELDS][64]),
+ * sized by its current counters. */
+static int array_fields(fsi_accel *a, const char *prefix, char names[][64], fsi_state_field *f)
 {
-    snprintf(out, size, "%s%s", prefix, what);
+    const size_t m = a->m > 0 ? (size_t)a->m : 0, cols = (size_t)a->columns;
+    const struct {
+        const char *what;
+        void *data;
+        size_t bytes;
+    } t[ARRAY_FIELDS] = {{"id", a->id, a->n > 0 ? (size_t)a->n * sizeof *a->id : 0},
+                         {"r", a->r, m * sizeof(double)},
+                         {"r_prev", a->r_prev, m * sizeof(double)},
+                         {"xt_prev", a->xt_prev, m * sizeof(double)},
+                         {"v", a->v, cols * m * sizeof(double)},
+                         {"w", a->w, cols * m * sizeof(double)},
+                         {"window_of", a->window_of, cols * sizeof(int)}};
+    for (int k = 0; k < ARRAY_FIELDS; k++) {
+        snprintf(names[k], 64, "%s%s", prefix, t[k].what);
+        f[k] = (fsi_state_field){names[k], t[k].data, t[k].data ? t[k].bytes : 0};
+    }
+    return ARRAY_FIELDS;
 }
 
 int fsi_accel_save(const fsi_accel *a, fsi_state *st, const char *prefix)
 {
-    char name[64];
-    const saved_counters c = {a->n,       a->ncomp,      a->m,          a->in_window,
-                              a->iteration, a->windows,  a->columns,    a->capacity_n,
-                              a->capacity_columns, a->capacity_m, a->omega};
-    const size_t m = a->m > 0 ? (size_t)a->m : 0, cols = (size_t)a->columns;
-    int rc = 0;
-    entry_name(name, sizeof name, prefix, "counters");
-    rc |= fsi_state_put(st, name, &c, sizeof c);
-    entry_name(name, sizeof name, prefix, "id");
-    rc |= fsi_state_put(st, name, a->id, a->n > 0 ? (size_t)a->n * sizeof *a->id : 0);
-    const struct {
-        const char *what;
-        const void *data;
-        size_t bytes;
-    } arrays[] = {{"r", a->r, m * sizeof(double)},
-                  {"r_prev", a->r_prev, m * sizeof(double)},
-                  {"xt_prev", a->xt_prev, m * sizeof(double)},
-                  {"v", a->v, cols * m * sizeof(double)},
-                  {"w", a->w, cols * m * sizeof(double)},
-                  {"window_of", a->window_of, cols * sizeof(int)}};
-    for (size_t k = 0; k < sizeof arrays / sizeof arrays[0]; k++) {
-        entry_name(name, sizeof name, prefix, arrays[k].what);
-        rc |= fsi_state_put(st, name, arrays[k].data, arrays[k].data ? arrays[k].bytes : 0);
-    }
-    return rc ? -1 : 0;
+    char names[ARRAY_FIELDS + 1][64];
+    fsi_state_field f[ARRAY_FIELDS + 1];
+    saved_counters c = {a->n,       a->ncomp,   a->m,       a->in_window,
+                        a->iteration, a->windows, a->columns, a->capacity_n,
+                        a->capacity_columns, a->capacity_m, a->omega};
+    snprintf(names[ARRAY_FIELDS], 64, "%scounters", prefix);
+    f[ARRAY_FIELDS] = (fsi_state_field){names[ARRAY_FIELDS], &c, sizeof c};
+    /* The arrays are only read here. */
+    array_fields((fsi_accel *)a, prefix, names, f);
+    return fsi_state_put_fields(st, f, ARRAY_FIELDS + 1);
 }
 
 int fsi_accel_restore(fsi_accel *a, const fsi_state *st, const char *prefix)
 {
-    char name[64];
+    char name[64], names[ARRAY_FIELDS][64];
     saved_counters c;
-    entry_name(name, sizeof name, prefix, "counters");
+    snprintf(name, sizeof name, "%scounters", prefix);
     if (fsi_state_get(st, name, &c, sizeof c) != 0)
         return -1;
     /* The capacities as they were: how many columns fit decides which go first. */
-    if (c.capacity_n > 0 || c.capacity_m > 0)
-        if (reserve(a, c.capacity_n, c.capacity_m) != 0)
-            return -1;
+    if ((c.capacity_n > 0 || c.capacity_m > 0) && reserve(a, c.capacity_n, c.capacity_m) != 0)
+        return -1;
     a->n = c.n;
     a->ncomp = c.ncomp;
     a->m = c.m;
@@ -387,25 +391,6 @@ int fsi_accel_restore(fsi_accel *a, const fsi_state *st, const char *prefix)
     a->windows = c.windows;
     a->columns = c.columns;
     a->omega = c.omega;
-    const size_t m = a->m > 0 ? (size_t)a->m : 0, cols = (size_t)a->columns;
-    struct {
-        const char *what;
-        void *data;
-        size_t bytes;
-    } arrays[] = {{"id", a->id, a->n > 0 ? (size_t)a->n * sizeof *a->id : 0},
-                  {"r", a->r, m * sizeof(double)},
-                  {"r_prev", a->r_prev, m * sizeof(double)},
-                  {"xt_prev", a->xt_prev, m * sizeof(double)},
-                  {"v", a->v, cols * m * sizeof(double)},
-                  {"w", a->w, cols * m * sizeof(double)},
-                  {"window_of", a->window_of, cols * sizeof(int)}};
-    for (size_t k = 0; k < sizeof arrays / sizeof arrays[0]; k++) {
-        entry_name(name, sizeof name, prefix, arrays[k].what);
-        const size_t saved = fsi_state_size(st, name);
-        if (saved != arrays[k].bytes && !(saved == 0 && !arrays[k].data))
-            return -1;
-        if (arrays[k].bytes > 0 && fsi_state_get(st, name, arrays[k].data, arrays[k].bytes) != 0)
-            return -1;
-    }
-    return 0;
+    fsi_state_field f[ARRAY_FIELDS];
+    return fsi_state_get_fields(st, f, array_fields(a, prefix, names, f));
 }

@@ -903,12 +903,18 @@ static int send_done(fsi_participant *p, int status, double dt_next_max, int n_s
 /* Test switch FSI_TEST_STALL="NAME:K": participant NAME never reports window K,
  * while its heartbeat thread keeps it looking alive — how the tests reproduce a
  * deadlock for [run] window_timeout. */
+/* 1 when the test switch 'variable' = "NAME:K" names this participant and its window. */
+static int test_switch_names_window(const fsi_participant *p, const char *variable)
+{
+    const char *spec = getenv(variable);
+    const char *colon = spec ? strrchr(spec, ':') : NULL;
+    return colon && (size_t)(colon - spec) == strlen(p->name) &&
+           strncmp(spec, p->name, strlen(p->name)) == 0 && atoi(colon + 1) == p->window;
+}
+
 static void test_stall_switch(const fsi_participant *p)
 {
-    const char *spec = getenv("FSI_TEST_STALL");
-    const char *colon = spec ? strrchr(spec, ':') : NULL;
-    if (!colon || (size_t)(colon - spec) != strlen(p->name) ||
-        strncmp(spec, p->name, strlen(p->name)) != 0 || atoi(colon + 1) != p->window)
+    if (!test_switch_names_window(p, "FSI_TEST_STALL"))
         return;
     fsi_warn("test switch FSI_TEST_STALL: stalling in window %d", p->window);
     for (;;)
@@ -941,11 +947,7 @@ static void test_slow_switch(const fsi_participant *p)
  * tests interrupt a run at a known point to restart it from a checkpoint. */
 static void test_kill_switch(const fsi_participant *p)
 {
-    const char *spec = getenv("FSI_TEST_KILL");
-    const char *colon = spec ? strrchr(spec, ':') : NULL;
-    if (!colon || (size_t)(colon - spec) != strlen(p->name) ||
-        strncmp(spec, p->name, strlen(p->name)) != 0 || atoi(colon + 1) != p->window ||
-        p->iteration != 0)
+    if (p->iteration != 0 || !test_switch_names_window(p, "FSI_TEST_KILL"))
         return;
     fsi_warn("test switch FSI_TEST_KILL: killed at the start of window %d", p->window);
     raise(SIGKILL);

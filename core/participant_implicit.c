@@ -81,6 +81,7 @@ int implicit_solid_motion(implicit_solid *s, int iteration, double dt, double dt
                           const fsi_interface *d, char *msg, size_t msg_size)
 {
     const int m = d->n * FSI_DIM;
+    s->iteration = iteration;
     if (iteration == 0) {
         if (reserve(s, d->n) != 0) {
             snprintf(msg, msg_size, "out of memory for %d interface particles", d->n);
@@ -88,7 +89,6 @@ int implicit_solid_motion(implicit_solid *s, int iteration, double dt, double dt
         }
         s->n = d->n;
         s->dt = dt;
-        s->dt_prev = dt_prev;
         s->have_force_last = 0;
         memcpy(s->id, d->id, (size_t)d->n * sizeof *s->id);
         memcpy(s->x_start, d->position, (size_t)m * sizeof(double));
@@ -116,12 +116,10 @@ int implicit_solid_motion(implicit_solid *s, int iteration, double dt, double dt
         }
         s->restarted = restarted;
     } else {
-        s->iteration = iteration;
         if (same_particles(s, d, "state", msg, msg_size) != 0)
             return -1;
         memcpy(s->u_in, s->u_next, (size_t)m * sizeof(double));
     }
-    s->iteration = iteration;
     if (!(dt > 0.0)) {     /* a window of length zero: the state as it is */
         memcpy(s->v_sent, d->velocity, (size_t)m * sizeof(double));
         memcpy(s->a_sent, d->acceleration, (size_t)m * sizeof(double));

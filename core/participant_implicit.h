@@ -40,7 +40,7 @@ typedef struct {
                              * iterations identical) */
     int n, capacity;
     int iteration;          /* of the motion in u_in */
-    double dt, dt_prev;
+    double dt;              /* the window's length */
     double history_dt;      /* the window length the acceleration's history is of */
     int32_t *id;            /* the window's particles, in the order sent */
     double *x_start;        /* their positions at t_k */

@@ -98,6 +98,32 @@ const void *fsi_state_data(const fsi_state *st, const char *name, size_t *bytes)
     return e->data;
 }
 
+int fsi_state_put_fields(fsi_state *st, const fsi_state_field *f, int count)
+{
+    for (int k = 0; k < count; k++)
+        if (fsi_state_put(st, f[k].name, f[k].data, f[k].bytes) != 0)
+            return -1;
+    return 0;
+}
+
+int fsi_state_fields_match(const fsi_state *st, const fsi_state_field *f, int count)
+{
+    for (int k = 0; k < count; k++)
+        if (fsi_state_size(st, f[k].name) != f[k].bytes)
+            return 0;
+    return 1;
+}
+
+int fsi_state_get_fields(const fsi_state *st, const fsi_state_field *f, int count)
+{
+    if (!fsi_state_fields_match(st, f, count))
+        return -1;
+    for (int k = 0; k < count; k++)
+        if (fsi_state_get(st, f[k].name, f[k].data, f[k].bytes) != 0)
+            return -1;      /* not reached: the sizes matched */
+    return 0;
+}
+
 void fsi_state_free(fsi_state *st)
 {
     for (int i = 0; i < st->n; i++)

@@ -45,6 +45,28 @@ int fsi_state_get(const fsi_state *st, const char *name, void *data, size_t byte
 /* name's entry itself (read-only, valid until the next put or clear), or NULL. */
 const void *fsi_state_data(const fsi_state *st, const char *name, size_t *bytes);
 
+/* A solver's state listed once as a table of fields, saved and restored as a whole:
+ *
+ *     fsi_state_field f[] = {{"nosbpd.stress", m->stress, n * 6 * sizeof(double)}, ...};
+ *     fsi_state_put_fields(st, f, count);          // save
+ *     fsi_state_get_fields(st, f, count);          // restore: all or nothing */
+typedef struct {
+    const char *name;       /* "<owner>.<array>", below 64 characters */
+    void *data;             /* the array itself (read by put, written by get) */
+    size_t bytes;
+} fsi_state_field;
+
+/* Copies every field into st (without clearing it). 0, or -1 when memory runs out. */
+int fsi_state_put_fields(fsi_state *st, const fsi_state_field *f, int count);
+
+/* 1 when st holds every field with exactly its size, else 0 (a state saved by another
+ * configuration, or not at all). */
+int fsi_state_fields_match(const fsi_state *st, const fsi_state_field *f, int count);
+
+/* Copies every field back from st when all of them match: 0; else -1, and nothing is
+ * changed. */
+int fsi_state_get_fields(const fsi_state *st, const fsi_state_field *f, int count);
+
 void fsi_state_free(fsi_state *st);
 
 #endif

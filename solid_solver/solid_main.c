@@ -38,7 +38,7 @@
 #include "solid_model.h"
 #include "solid_probes.h"
 #include "solid_rk4.h"
-#include "solid_state.h"
+#include "state_store.h"
 #include "state_store.h"
 #include "timers.h"
 
@@ -136,32 +136,32 @@ static void free_run(solid_run *s)
  * the time and the particles. */
 enum { RUN_STATE_FIELDS = 17 };
 
-static int run_state_fields(solid_run *s, solid_state_field *f)
+static int run_state_fields(solid_run *s, fsi_state_field *f)
 {
     const size_t v = (size_t)s->p.n * FSI_DIM * sizeof(double);
     int k = 0;
-    f[k++] = (solid_state_field){"solid.x", s->p.x, v};
-    f[k++] = (solid_state_field){"solid.v", s->p.v, v};
-    f[k++] = (solid_state_field){"solid.a", s->p.a, v};
-    f[k++] = (solid_state_field){"solid.f_int", s->f_int, v};
-    f[k++] = (solid_state_field){"solid.x_window", s->iface.x_window, v};
-    f[k++] = (solid_state_field){"solid.v_mean", s->iface.v_mean, v};
-    f[k++] = (solid_state_field){"solid.have_x_window", &s->iface.have_x_window,
+    f[k++] = (fsi_state_field){"solid.x", s->p.x, v};
+    f[k++] = (fsi_state_field){"solid.v", s->p.v, v};
+    f[k++] = (fsi_state_field){"solid.a", s->p.a, v};
+    f[k++] = (fsi_state_field){"solid.f_int", s->f_int, v};
+    f[k++] = (fsi_state_field){"solid.x_window", s->iface.x_window, v};
+    f[k++] = (fsi_state_field){"solid.v_mean", s->iface.v_mean, v};
+    f[k++] = (fsi_state_field){"solid.have_x_window", &s->iface.have_x_window,
                                  sizeof s->iface.have_x_window};
-    f[k++] = (solid_state_field){"solid.dt_mean", &s->iface.dt_mean, sizeof s->iface.dt_mean};
-    f[k++] = (solid_state_field){"solid.dt_last", &s->dt_last, sizeof s->dt_last};
-    f[k++] = (solid_state_field){"solid.density_min", &s->iface.density_min,
+    f[k++] = (fsi_state_field){"solid.dt_mean", &s->iface.dt_mean, sizeof s->iface.dt_mean};
+    f[k++] = (fsi_state_field){"solid.dt_last", &s->dt_last, sizeof s->dt_last};
+    f[k++] = (fsi_state_field){"solid.density_min", &s->iface.density_min,
                                  sizeof s->iface.density_min};
-    f[k++] = (solid_state_field){"solid.density_max", &s->iface.density_max,
+    f[k++] = (fsi_state_field){"solid.density_max", &s->iface.density_max,
                                  sizeof s->iface.density_max};
-    f[k++] = (solid_state_field){"solid.work", &s->work, sizeof s->work};
-    f[k++] = (solid_state_field){"solid.work_in", &s->work_in, sizeof s->work_in};
-    f[k++] = (solid_state_field){"solid.fluid_impulse", s->fluid_impulse,
+    f[k++] = (fsi_state_field){"solid.work", &s->work, sizeof s->work};
+    f[k++] = (fsi_state_field){"solid.work_in", &s->work_in, sizeof s->work_in};
+    f[k++] = (fsi_state_field){"solid.fluid_impulse", s->fluid_impulse,
                                  sizeof s->fluid_impulse};
-    f[k++] = (solid_state_field){"solid.fluid_work_at_sent", &s->fluid_work_at_sent,
+    f[k++] = (fsi_state_field){"solid.fluid_work_at_sent", &s->fluid_work_at_sent,
                                  sizeof s->fluid_work_at_sent};
-    f[k++] = (solid_state_field){"solid.fluid_work", &s->fluid_work, sizeof s->fluid_work};
-    f[k++] = (solid_state_field){"solid.substeps", &s->substeps, sizeof s->substeps};
+    f[k++] = (fsi_state_field){"solid.fluid_work", &s->fluid_work, sizeof s->fluid_work};
+    f[k++] = (fsi_state_field){"solid.substeps", &s->substeps, sizeof s->substeps};
     return k;
 }
 
@@ -169,9 +169,9 @@ static int run_state_fields(solid_run *s, solid_state_field *f)
  * or -1 with s->msg set. */
 static int save_state(solid_run *s)
 {
-    solid_state_field f[RUN_STATE_FIELDS];
+    fsi_state_field f[RUN_STATE_FIELDS];
     fsi_state_clear(&s->saved);
-    if (solid_state_put_fields(&s->saved, f, run_state_fields(s, f)) != 0 ||
+    if (fsi_state_put_fields(&s->saved, f, run_state_fields(s, f)) != 0 ||
         solid_model_save_state(s->model, &s->p, &s->saved) != 0) {
         snprintf(s->msg, sizeof s->msg, "out of memory saving the state of %d solid "
                  "particles", s->p.n);
@@ -184,11 +184,11 @@ static int save_state(solid_run *s)
  * with s->msg set. */
 static int restore_state(solid_run *s, const fsi_state *st)
 {
-    solid_state_field f[RUN_STATE_FIELDS];
+    fsi_state_field f[RUN_STATE_FIELDS];
     const int count = run_state_fields(s, f);
-    if (!solid_state_fields_match(st, f, count) ||
+    if (!fsi_state_fields_match(st, f, count) ||
         solid_model_restore_state(s->model, &s->p, st) != 0 ||
-        solid_state_get_fields(st, f, count) != 0) {
+        fsi_state_get_fields(st, f, count) != 0) {
         snprintf(s->msg, sizeof s->msg, "the state saved at the window's start is missing "
                  "or does not fit the %d solid particles", s->p.n);
         return -1;

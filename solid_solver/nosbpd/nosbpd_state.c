@@ -13,27 +13,27 @@
 #include <string.h>
 
 #include "nosbpd_internal.h"
-#include "solid_state.h"
+#include "state_store.h"
 
 enum { N_FIELDS = 11 };
 
-static int state_fields(const solid_model *m, solid_state_field *f)
+static int state_fields(const solid_model *m, fsi_state_field *f)
 {
     const size_t n = (size_t)m->n, d = sizeof(double);
     int k = 0;
-    f[k++] = (solid_state_field){"nosbpd.intact", m->bonds.intact, (size_t)m->bonds.n_bonds};
-    f[k++] = (solid_state_field){"nosbpd.stress", m->stress, n * 6 * d};
-    f[k++] = (solid_state_field){"nosbpd.material_state", m->mstate,
+    f[k++] = (fsi_state_field){"nosbpd.intact", m->bonds.intact, (size_t)m->bonds.n_bonds};
+    f[k++] = (fsi_state_field){"nosbpd.stress", m->stress, n * 6 * d};
+    f[k++] = (fsi_state_field){"nosbpd.material_state", m->mstate,
                                  n * sizeof *m->mstate};
-    f[k++] = (solid_state_field){"nosbpd.work", m->work, n * d};
-    f[k++] = (solid_state_field){"nosbpd.thickness_stretch", m->thickness_stretch, n * d};
-    f[k++] = (solid_state_field){"nosbpd.defgrad", m->defgrad, n * FSI_MAT_SIZE * d};
-    f[k++] = (solid_state_field){"nosbpd.fit", m->fit, n * FSI_DIM * (size_t)m->n_basis * d};
-    f[k++] = (solid_state_field){"nosbpd.flags", m->flags, n};
-    f[k++] = (solid_state_field){"nosbpd.broken", (void *)&m->n_broken, sizeof m->n_broken};
-    f[k++] = (solid_state_field){"nosbpd.without_force_state", (void *)&m->n_without_force_state,
+    f[k++] = (fsi_state_field){"nosbpd.work", m->work, n * d};
+    f[k++] = (fsi_state_field){"nosbpd.thickness_stretch", m->thickness_stretch, n * d};
+    f[k++] = (fsi_state_field){"nosbpd.defgrad", m->defgrad, n * FSI_MAT_SIZE * d};
+    f[k++] = (fsi_state_field){"nosbpd.fit", m->fit, n * FSI_DIM * (size_t)m->n_basis * d};
+    f[k++] = (fsi_state_field){"nosbpd.flags", m->flags, n};
+    f[k++] = (fsi_state_field){"nosbpd.broken", (void *)&m->n_broken, sizeof m->n_broken};
+    f[k++] = (fsi_state_field){"nosbpd.without_force_state", (void *)&m->n_without_force_state,
                                  sizeof m->n_without_force_state};
-    f[k++] = (solid_state_field){"nosbpd.warnings", (void *)&m->n_warnings,
+    f[k++] = (fsi_state_field){"nosbpd.warnings", (void *)&m->n_warnings,
                                  sizeof m->n_warnings};
     return k;
 }
@@ -41,15 +41,15 @@ static int state_fields(const solid_model *m, solid_state_field *f)
 int solid_model_save_state(const solid_model *m, const solid_particles *p, fsi_state *st)
 {
     (void)p;
-    solid_state_field f[N_FIELDS];
-    return solid_state_put_fields(st, f, state_fields(m, f));
+    fsi_state_field f[N_FIELDS];
+    return fsi_state_put_fields(st, f, state_fields(m, f));
 }
 
 int solid_model_restore_state(solid_model *m, solid_particles *p, const fsi_state *st)
 {
-    solid_state_field f[N_FIELDS];
+    fsi_state_field f[N_FIELDS];
     const int count = state_fields(m, f);
-    if (!solid_state_fields_match(st, f, count))
+    if (!fsi_state_fields_match(st, f, count))
         return -1;
     /* The points whose bonds differ from the saved ones (iscratch: 1). */
     const uint8_t *intact = fsi_state_data(st, "nosbpd.intact", NULL);
@@ -60,7 +60,7 @@ int solid_model_restore_state(solid_model *m, solid_particles *p, const fsi_stat
         m->iscratch[i] = len > 0 && memcmp(intact + offset[i], m->bonds.intact + offset[i], len) != 0;
         changed += m->iscratch[i];
     }
-    if (solid_state_get_fields(st, f, count) != 0)
+    if (fsi_state_get_fields(st, f, count) != 0)
         return -1;
     /* The restored flags already hold what these calls set (NOSBPD_POINT_LINEAR_FIT). */
     for (int i = 0; changed > 0 && i < m->n; i++)

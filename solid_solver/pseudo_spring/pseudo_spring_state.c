@@ -11,27 +11,27 @@
  * pairs' kernel values and artificial stress, R_i, the gather factors and the
  * hourglass fits. */
 #include "pseudo_spring_internal.h"
-#include "solid_state.h"
+#include "state_store.h"
 
 enum { N_FIELDS = 9 };
 
-static int state_fields(const solid_model *m, solid_state_field *f)
+static int state_fields(const solid_model *m, fsi_state_field *f)
 {
     const size_t n = (size_t)m->n, d = sizeof(double);
     int k = 0;
-    f[k++] = (solid_state_field){"pseudo_spring.intact", m->links.intact,
+    f[k++] = (fsi_state_field){"pseudo_spring.intact", m->links.intact,
                                  (size_t)m->links.n_bonds};
-    f[k++] = (solid_state_field){"pseudo_spring.density", m->density, n * d};
-    f[k++] = (solid_state_field){"pseudo_spring.stress", m->stress, n * 6 * d};
-    f[k++] = (solid_state_field){"pseudo_spring.material_state", m->mstate,
+    f[k++] = (fsi_state_field){"pseudo_spring.density", m->density, n * d};
+    f[k++] = (fsi_state_field){"pseudo_spring.stress", m->stress, n * 6 * d};
+    f[k++] = (fsi_state_field){"pseudo_spring.material_state", m->mstate,
                                  n * sizeof *m->mstate};
-    f[k++] = (solid_state_field){"pseudo_spring.work", m->work, n * d};
-    f[k++] = (solid_state_field){"pseudo_spring.thickness_stretch", m->thickness_stretch,
+    f[k++] = (fsi_state_field){"pseudo_spring.work", m->work, n * d};
+    f[k++] = (fsi_state_field){"pseudo_spring.thickness_stretch", m->thickness_stretch,
                                  n * d};
-    f[k++] = (solid_state_field){"pseudo_spring.flags", m->flags, n};
-    f[k++] = (solid_state_field){"pseudo_spring.broken", (void *)&m->n_broken,
+    f[k++] = (fsi_state_field){"pseudo_spring.flags", m->flags, n};
+    f[k++] = (fsi_state_field){"pseudo_spring.broken", (void *)&m->n_broken,
                                  sizeof m->n_broken};
-    f[k++] = (solid_state_field){"pseudo_spring.warnings", (void *)&m->n_warnings,
+    f[k++] = (fsi_state_field){"pseudo_spring.warnings", (void *)&m->n_warnings,
                                  sizeof m->n_warnings};
     return k;
 }
@@ -39,15 +39,15 @@ static int state_fields(const solid_model *m, solid_state_field *f)
 int solid_model_save_state(const solid_model *m, const solid_particles *p, fsi_state *st)
 {
     (void)p;
-    solid_state_field f[N_FIELDS];
-    return solid_state_put_fields(st, f, state_fields(m, f));
+    fsi_state_field f[N_FIELDS];
+    return fsi_state_put_fields(st, f, state_fields(m, f));
 }
 
 int solid_model_restore_state(solid_model *m, solid_particles *p, const fsi_state *st)
 {
     (void)p;
-    solid_state_field f[N_FIELDS];
-    if (solid_state_get_fields(st, f, state_fields(m, f)) != 0)
+    fsi_state_field f[N_FIELDS];
+    if (fsi_state_get_fields(st, f, state_fields(m, f)) != 0)
         return -1;
     for (int i = 0; i < m->n; i++)
         ps_count_links(m, i);

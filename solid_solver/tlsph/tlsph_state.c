@@ -5,21 +5,21 @@
  * evaluation, which the output fields (stress, jacobian) are computed from; not
  * saved, the first Piola-Kirchhoff stress of the last evaluation, which every call
  * rewrites for every point before its gather reads it. */
-#include "solid_state.h"
+#include "state_store.h"
 #include "tlsph_internal.h"
 
 int solid_model_save_state(const solid_model *m, const solid_particles *p, fsi_state *st)
 {
     (void)p;
-    const solid_state_field f = {"tlsph.defgrad", m->defgrad,
+    const fsi_state_field f = {"tlsph.defgrad", m->defgrad,
                                  (size_t)m->n * FSI_MAT_SIZE * sizeof(double)};
-    return solid_state_put_fields(st, &f, 1);
+    return fsi_state_put_fields(st, &f, 1);
 }
 
 int solid_model_restore_state(solid_model *m, solid_particles *p, const fsi_state *st)
 {
     (void)p;
-    const solid_state_field f = {"tlsph.defgrad", m->defgrad,
+    const fsi_state_field f = {"tlsph.defgrad", m->defgrad,
                                  (size_t)m->n * FSI_MAT_SIZE * sizeof(double)};
-    return solid_state_get_fields(st, &f, 1);
+    return fsi_state_get_fields(st, &f, 1);
 }

@@ -16,6 +16,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include "dim.h"
@@ -24,11 +25,19 @@
 
 #define N 6
 
+/* A [run] section with the acceleration given, read through the case reader as a run
+ * reads it; the file goes to $FSI_TEST_TMP (ctest sets it) as other unit tests' do. */
 static fsi_case *case_with(const char *acceleration)
 {
-    char path[] = "/tmp/test_participant_implicit_XXXXXX";
-    int fd = mkstemp(path);
-    FILE *f = fdopen(fd, "w");
+    const char *dir = getenv("FSI_TEST_TMP") ? getenv("FSI_TEST_TMP") : ".";
+    char path[4200];
+    snprintf(path, sizeof path, "%s/test_participant_implicit_%s.ini", dir, acceleration);
+    mkdir(dir, 0755);   /* ctest's scratch folder; may exist already */
+    FILE *f = fopen(path, "w");
+    if (!f) {
+        fprintf(stderr, "cannot write %s\n", path);
+        exit(1);
+    }
     fprintf(f, "[run]\nend_time = 1\nscheme = implicit\ncoupling_tolerance = 1e-10\n"
                "coupling_acceleration = %s\ncoupling_relaxation = 0.5\n", acceleration);
     fclose(f);
