@@ -36,6 +36,12 @@ for cmd in main test run inspect replay keys solvers plot-coupling bench setup b
   expect_status 0 "help_$cmd" "$FSI" help "$cmd"
   grep -q "usage: fsi $cmd" "help_$cmd.txt" || { cat "help_$cmd.txt"; fail "fsi help $cmd: no usage line"; }
 done
+# fsi CMD --help is the same, and runs nothing (fsi main --help would run C1 otherwise).
+for cmd in main test bench plot-coupling run keys; do
+  expect_status 0 "dash_help_$cmd" "$FSI" "$cmd" --help
+  cmp -s "help_$cmd.txt" "dash_help_$cmd.txt" || fail "fsi $cmd --help differs from fsi help $cmd"
+done
+[ ! -e "$FSI_SOURCE_DIR/out/--help" ] || fail "fsi main --help ran the scene"
 grep -q -- "--checkpoint-interval" help_run.txt || fail "fsi help run does not show fsi-run's options"
 grep -q -- "--participant" help_replay.txt || fail "fsi help replay does not show fsi-replay's options"
 pass "fsi help CMD gives a usage for every command"
@@ -58,7 +64,11 @@ for program in fsi-run fsi-inspect fsi-replay fsi-keys fsi-solvers fsi-record; d
   grep -q "unknown option '--no-such-option'" "${program}_unknown.txt" ||
     { cat "${program}_unknown.txt"; fail "$program: no message for an unknown option"; }
 done
-pass "fsi --version: $(cat version.txt); every program answers --help, -h, --version"
+grep -qx "version: \"$version\"" "$FSI_SOURCE_DIR/CITATION.cff" ||
+  fail "CITATION.cff's version is not CMakeLists.txt's $version"
+grep -q "Apache License" "$FSI_SOURCE_DIR/LICENSE" && grep -q "Version 2.0, January 2004" "$FSI_SOURCE_DIR/LICENSE" ||
+  fail "LICENSE is not the Apache License 2.0"
+pass "fsi --version: $(cat version.txt); every program answers --help, -h, --version; CITATION.cff the same version"
 
 # Unknown commands and help topics exit 2 and name the commands.
 expect_status 2 nosuch "$FSI" nosuch
