@@ -31,8 +31,11 @@ cmp -s help.txt help_short.txt && cmp -s help.txt help_word.txt ||
   fail "fsi --help, fsi -h and fsi help differ"
 pass "fsi --help, -h and help list every command"
 
-# fsi help CMD for every command; a program's own usage for those that run one.
-for cmd in main test run inspect replay keys solvers plot-coupling bench setup build help version; do
+# fsi help CMD for every command fsi --help lists (new ones included); a program's own
+# usage for those that run one.
+commands="$(sed -n 's/^  fsi \([a-z-]*\).*/\1/p' help.txt)"
+[ "$(echo "$commands" | wc -l)" -ge 13 ] || fail "fsi --help lists too few commands: $commands"
+for cmd in $commands; do
   expect_status 0 "help_$cmd" "$FSI" help "$cmd"
   grep -q "usage: fsi $cmd" "help_$cmd.txt" || { cat "help_$cmd.txt"; fail "fsi help $cmd: no usage line"; }
 done
