@@ -23,7 +23,7 @@ int fsi_parse_launch_option(fsi_args *a, launch_options *o)
         } else if (v)
             o->sets[o->n_sets++] = v;
     } else if (fsi_arg_value(a, "--threads", &v)) {
-        char *end;
+        char *end = NULL;
         long n = v ? strtol(v, &end, 10) : 0;
         if (v && (*end || n < 1 || n > 1024))
             fsi_arg_bad_value(a, "--threads", v, "needs a whole number from 1 to 1024");
