@@ -27,6 +27,8 @@ die() { echo "fsi spy: $*" >&2; exit 2; }
 # Where the player and lcm-spy meet, inside the private namespace only.
 PRIVATE_URL="udpm://239.255.76.67:7667?ttl=0"
 LCM_JAR=/usr/share/java/lcm.jar
+# lcm-spy draws its message views with jchart2d (Debian's libjchart2d-java).
+CHART_JAR=/usr/share/java/jchart2d.jar
 
 log="" speed="" url=""
 while [ $# -gt 0 ]; do
@@ -50,9 +52,10 @@ done
 here="$(cd "$(dirname "$(readlink -f "${BASH_SOURCE[0]}")")" && pwd)"
 types="${FSI_LCMTYPES_JAR:-$here/../share/fsi/java/fsi_lcmtypes.jar}"
 [ -f "$LCM_JAR" ] || die "$LCM_JAR missing: install Debian's liblcm-java (launch/setup.sh does)"
+[ -f "$CHART_JAR" ] || die "$CHART_JAR missing: install Debian's libjchart2d-java (launch/setup.sh does)"
 [ -f "$types" ] || die "no message types for lcm-spy ($types): they are built when liblcm-java and a JDK are present; rebuild"
 command -v java >/dev/null || die "no java: install a JDK (openjdk-17-jdk-headless)"
-classpath="$LCM_JAR:$types"
+classpath="$LCM_JAR:$CHART_JAR:$types"
 spy=(java -Djava.net.preferIPv4Stack=true -Xmx256m -cp "$classpath" lcm.spy.Spy)
 
 if [ -n "$url" ]; then
@@ -60,15 +63,25 @@ if [ -n "$url" ]; then
 fi
 
 # Inside a new user and network namespace: loopback up with the multicast route on
-# it, lcm-spy, then the player; closing lcm-spy ends the player.
+# it, lcm-spy, then the player; closing lcm-spy ends the player. The system test sets
+# FSI_TEST_SPY_RECORD=FILE to put lcm-logger in lcm-spy's place (no display there) and
+# checks that what the player sent in the namespace is the log.
 export FSI_SPY_LOG="$log" FSI_SPY_SPEED="$speed" FSI_SPY_URL="$PRIVATE_URL" FSI_SPY_CP="$classpath"
+export FSI_TEST_SPY_RECORD="${FSI_TEST_SPY_RECORD:-}"
 exec unshare -rn bash -c '
   set -euo pipefail
   ip link set lo up
   ip route add 224.0.0.0/4 dev lo
-  java -Djava.net.preferIPv4Stack=true -Xmx256m -cp "$FSI_SPY_CP" lcm.spy.Spy \
-    --lcm-url="$FSI_SPY_URL" &
-  spy=$!
+  viewer="" player=""
+  trap '"'"'kill $viewer $player 2>/dev/null || true'"'"' EXIT
+  trap "exit 143" TERM INT HUP
+  if [ -n "$FSI_TEST_SPY_RECORD" ]; then
+    lcm-logger -q -f --lcm-url="$FSI_SPY_URL" "$FSI_TEST_SPY_RECORD" &
+  else
+    java -Djava.net.preferIPv4Stack=true -Xmx256m -cp "$FSI_SPY_CP" lcm.spy.Spy \
+      --lcm-url="$FSI_SPY_URL" &
+  fi
+  viewer=$!
   sleep 2   # lcm-spy subscribes before the first message is played
   if [ -n "$FSI_SPY_SPEED" ]; then
     lcm-logplayer -s "$FSI_SPY_SPEED" -l "$FSI_SPY_URL" "$FSI_SPY_LOG" &
@@ -77,6 +90,13 @@ exec unshare -rn bash -c '
       --lcm-url="$FSI_SPY_URL" "$FSI_SPY_LOG" &
   fi
   player=$!
-  wait "$spy" || true
-  kill "$player" 2>/dev/null || true
+  if [ -n "$FSI_TEST_SPY_RECORD" ]; then
+    wait "$player"
+    sleep 1
+    kill -INT "$viewer"
+    wait "$viewer" || true
+  else
+    wait "$viewer" || true
+    kill "$player" 2>/dev/null || true
+  fi
 '
