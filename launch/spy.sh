@@ -25,7 +25,7 @@ EOF
 die() { echo "fsi spy: $*" >&2; exit 2; }
 
 # Where the player and lcm-spy meet, inside the private namespace only.
-PRIVATE_URL="udpm://239.255.76.67:7667?ttl=0"
+PRIVATE_URL="udpm://239.255.76.67:7667?ttl=0&recv_buf_size=4194304"
 LCM_JAR=/usr/share/java/lcm.jar
 # lcm-spy draws its message views with jchart2d (Debian's libjchart2d-java).
 CHART_JAR=/usr/share/java/jchart2d.jar
@@ -64,10 +64,11 @@ fi
 
 # Inside a new user and network namespace: loopback up with the multicast route on
 # it, lcm-spy, then the player; closing lcm-spy ends the player. The system test sets
-# FSI_TEST_SPY_RECORD=FILE to put lcm-logger in lcm-spy's place (no display there) and
-# checks that what the player sent in the namespace is the log.
+# FSI_TEST_SPY_RECORDER=fsi-record and FSI_TEST_SPY_RECORD=FILE to put the recorder in
+# lcm-spy's place (it has no display) and checks that what the player sent in the
+# namespace is the log.
 export FSI_SPY_LOG="$log" FSI_SPY_SPEED="$speed" FSI_SPY_URL="$PRIVATE_URL" FSI_SPY_CP="$classpath"
-export FSI_TEST_SPY_RECORD="${FSI_TEST_SPY_RECORD:-}"
+export FSI_TEST_SPY_RECORD="${FSI_TEST_SPY_RECORD:-}" FSI_TEST_SPY_RECORDER="${FSI_TEST_SPY_RECORDER:-}"
 exec unshare -rn bash -c '
   set -euo pipefail
   ip link set lo up
@@ -76,7 +77,7 @@ exec unshare -rn bash -c '
   trap '"'"'kill $viewer $player 2>/dev/null || true'"'"' EXIT
   trap "exit 143" TERM INT HUP
   if [ -n "$FSI_TEST_SPY_RECORD" ]; then
-    lcm-logger -q -f --lcm-url="$FSI_SPY_URL" "$FSI_TEST_SPY_RECORD" &
+    "$FSI_TEST_SPY_RECORDER" "$FSI_SPY_URL" "$FSI_TEST_SPY_RECORD" &
   else
     java -Djava.net.preferIPv4Stack=true -Xmx256m -cp "$FSI_SPY_CP" lcm.spy.Spy \
       --lcm-url="$FSI_SPY_URL" &

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # `fsi spy`: the Java message types for lcm-spy (built when Debian's liblcm-java and a
 # JDK are present) decode every message of a traffic log with LCM's own Java log
-# reader, and the log played back in spy's private network arrives whole (lcm-logger
+# reader, and the log played back in spy's private network arrives whole (fsi-record
 # standing in for lcm-spy, which needs a display). Without liblcm-java or a JDK,
 # `fsi spy` must say what is missing and exit 2.
 source "$(dirname "$0")/lib.sh"
@@ -48,9 +48,9 @@ diff python_counts.txt java_counts.txt || fail "the Java types decode other coun
 pass "the jar's types decode all $(awk '{s += $2} END {print s}' java_counts.txt) FSI_ events of the log"
 
 # The playback path of `fsi spy LOG --speed 1` (real time: faster, UDP on loopback
-# drops messages in bursts), with lcm-logger recording in the
-# private network in lcm-spy's place: every event arrives, nothing else.
-FSI_TEST_SPY_RECORD="$PWD/replayed.lcmlog" timeout 60 "$spy" run/traffic.lcmlog --speed 1 \
+# drops messages in bursts), with fsi-record recording in the private network in
+# lcm-spy's place: every event arrives, nothing else.
+FSI_TEST_SPY_RECORDER="$FSI_BIN_DIR/fsi-record" FSI_TEST_SPY_RECORD="$PWD/replayed.lcmlog" timeout 60 "$spy" run/traffic.lcmlog --speed 1 \
   >spy.txt 2>&1 || { cat spy.txt; fail "fsi spy's playback failed"; }
 /usr/bin/python3 -m fsi_traffic run/traffic.lcmlog >sent.txt
 /usr/bin/python3 -m fsi_traffic replayed.lcmlog >received.txt
