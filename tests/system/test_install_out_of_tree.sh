@@ -19,6 +19,10 @@ done
 "$prefix/bin/fsi-solvers" >solvers.txt || fail "installed fsi-solvers failed"
 missing=$(awk '$1 == "fluid" || $1 == "solid"' solvers.txt | awk '$NF != "yes"' | wc -l)
 [ "$missing" -eq 0 ] || fail "installed fsi-solvers finds $missing programs missing: $(cat solvers.txt)"
+"$prefix/bin/fsi-spy" --help >/dev/null || fail "installed fsi-spy --help failed"
+if [ -f "$build_dir/java/fsi_lcmtypes.jar" ]; then
+  [ -f "$prefix/share/fsi/java/fsi_lcmtypes.jar" ] || fail "the Java types were built but not installed"
+fi
 pass "installed: programs, library, headers, pkg-config file, CMake package, Python types"
 
 # Every installed header compiles on its own (they include nothing that is not installed).
@@ -55,7 +59,7 @@ sed "s|REPLACE_FLUID|dashpot-pkg-config|" template.ini >pkg-config.ini
 grep -q "^solver = external" cmake.ini || fail "test case not rewritten: $(cat cmake.ini)"
 "$FSI_RUN" builtin.ini --out builtin >builtin.txt 2>&1 || { cat builtin.txt; fail "in-tree run failed"; }
 for run in cmake pkg-config; do
-  "$prefix/bin/fsi-run" "$run.ini" --out "$run" --set run.window_timeout=20 >"$run.txt" 2>&1 \
+  "$prefix/bin/fsi-run" "$run.ini" --out "$run" --log-traffic --set run.window_timeout=20 >"$run.txt" 2>&1 \
     || { cat "$run.txt" "$run"/*.log; fail "installed fsi-run with the $run-built programs failed"; }
   grep -q "^exit = ok" "$run/run.log" || fail "$run: run.log does not say exit = ok: $(grep "^exit" "$run/run.log")"
   output_readable "$run" solid fluid || fail "$run: output not readable"
@@ -63,3 +67,11 @@ for run in cmake pkg-config; do
 done
 rows=$(($(wc -l <cmake/probes.csv) - 1))
 pass "installed fsi-run ran the out-of-tree programs: finished, $rows probe rows, results identical to the project's build"
+
+# The installed Python types read the installed fsi-run's traffic log (recorded by the
+# installed fsi-record): one FSI_STEP per window, as run.log counts them.
+windows=$(awk '$1 == "windows" {print $3}' cmake/run.log)
+steps=$(PYTHONPATH="$prefix/share/fsi/python" /usr/bin/python3 -m fsi_traffic cmake/traffic.lcmlog \
+  | awk '$3 == "FSI_STEP"' | wc -l)
+[ "$steps" -eq $((windows + 1)) ] || fail "installed fsi_traffic.py: $steps FSI_STEP lines for $windows windows"
+pass "the installed Python reader decodes the installed run's traffic log ($steps grants for $windows windows)"
