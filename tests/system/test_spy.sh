@@ -67,7 +67,14 @@ if command -v Xvfb >/dev/null; then
   [ -s display.txt ] || { kill "$xvfb"; fail "Xvfb did not start: $(cat xvfb.txt)"; }
   DISPLAY=":$(head -n 1 display.txt)" "$spy" run/traffic.lcmlog --speed 1 >lcm-spy.txt 2>&1 &
   viewer=$!
-  sleep 8
+  # The JVM's start and lcm-spy's search of the classpath take seconds, more on a busy
+  # machine: wait for its report (up to 60 s), then give the log time to play.
+  for _ in $(seq 600); do
+    grep -q "LCM types" lcm-spy.txt && break
+    kill -0 "$viewer" 2>/dev/null || break
+    sleep 0.1
+  done
+  sleep 3
   alive=0; kill -0 "$viewer" 2>/dev/null && alive=1
   kill "$viewer" 2>/dev/null || true
   wait "$viewer" 2>/dev/null || true
