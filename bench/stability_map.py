@@ -14,9 +14,14 @@ import re
 import c4_plate_under_water
 import fsi_results
 
-# A run within this of the 2D elasticity deflection is accurate: C4 at T / dx = 4, the
-# scene's resolution, is +8 to +9 % off with every combination (docs/validation.md C4).
-ACCURATE = 0.12
+# The solid model's own error at the scene's T / dx = 4: the plate alone under the
+# water's hydrostatic load, `bench/c4_plate_alone.sh OUT --n 4 --solver S` (74.58, 76.73
+# and 86.80 um against 2D elasticity's 70.66 um). A coupled run is accurate when its
+# settled deflection is within ACCURATE of what its solid gives alone: the first maps'
+# 12 % from 2D elasticity for NOSB-PD, less NOSB-PD's own +5.6 %, leaves 6.5 % for the
+# fluid's resolution and the coupling.
+SOLID_OWN_ERROR = {"nosbpd": 0.0555, "tlsph": 0.0859, "pseudo_spring": 0.2284}
+ACCURATE = 0.065
 AXIS_LABEL = {"density": "solid / fluid density ratio", "stiffness": "E / 67.5 GPa",
               "safety": "step factors / defaults"}
 
@@ -52,9 +57,11 @@ def cell(run):
         r["wall"] = s["wall"]
     except (OSError, KeyError, ValueError, IndexError, ZeroDivisionError):
         r["error"], r["t_end"], r["wall"] = float("nan"), 0.0, None
+    solid = next((k for k in SOLID_OWN_ERROR if "_%s_" % k in row + "_"), None)
+    own = SOLID_OWN_ERROR.get(solid, 0.0)
     if r["stop"]:
         r["state"] = "stopped"
-    elif abs(r["error"]) <= ACCURATE:
+    elif abs(r["error"] - own) <= ACCURATE:
         r["state"] = "stable"
     else:
         r["state"] = "inaccurate"
@@ -87,9 +94,11 @@ def main():
             md.write("| %s | " % label(row))
             md.write(" | ".join(text(at[(row, v)]) if (row, v) in at else "" for v in values))
             md.write(" |\n")
-        md.write("\n%s across; ok = settled mid-span deflection within %.0f %% of 2D "
-                 "elasticity (bench/fe_clamped_plate.py).\n\nWhy the stopped runs stopped:\n\n"
-                 % (AXIS_LABEL.get(a.axis, a.axis), 100 * ACCURATE))
+        md.write("\n%s across; the cells give the settled mid-span deflection's error from 2D "
+                 "elasticity (bench/fe_clamped_plate.py); ok = within %.1f %% of the solid's own "
+                 "error at this resolution (%s).\n\nWhy the stopped runs stopped:\n\n"
+                 % (AXIS_LABEL.get(a.axis, a.axis), 100 * ACCURATE,
+                    ", ".join("%s %+.1f %%" % (k, 100 * v) for k, v in SOLID_OWN_ERROR.items())))
         for c in cells:
             if c["stop"]:
                 md.write("- %s, %s = %g: %s\n" % (c["row"], a.axis, c["value"],
@@ -116,8 +125,8 @@ def main():
     ax.set_yticks([i + 0.5 for i in range(len(rows))])
     ax.set_yticklabels([label(r) for r in rows], fontsize=8)
     ax.set_xlabel(AXIS_LABEL.get(a.axis, a.axis))
-    ax.set_title("C4, 0.5 m of water, T/dx = 4: green stable, yellow > %.0f %% off, red stopped"
-                 % (100 * ACCURATE), fontsize=9)
+    ax.set_title("C4, 0.5 m of water, T/dx = 4: green stable, yellow > %.1f %% off the solid "
+                 "alone, red stopped" % (100 * ACCURATE), fontsize=9)
     ax.invert_yaxis()
     fig.tight_layout()
     fig.savefig(a.png, dpi=110)
