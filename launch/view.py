@@ -394,42 +394,51 @@ def axes_pixels(fig, ax):
     return "%d,%d,%d,%d" % (round(b.x0), round(h - b.y1), round(b.x1), round(h - b.y0))
 
 
-def render(parts, panels, scales, title, png, lims):
-    """Draw the panels (one {name: (time, key)} each) into png; its PNG text holds the
-    frames' times and the axes' boxes (fsi:time, fsi:axes) for tests and scripts."""
+def figure(n_panels, n_bars, lims):
+    """(figure, axes array) for n panels of the domain lims with n colour bars: panels
+    of the domain's aspect, at most 16 x 10 inches of them."""
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     xmin, xmax, ymin, ymax = lims
     aspect = (ymax - ymin) / (xmax - xmin)
-    rows, cols = grid_shape(len(panels), aspect)
+    rows, cols = grid_shape(n_panels, aspect)
     panels_width = min(5.5 * cols, 16.0)
     panels_height = min(max(panels_width * rows * aspect / cols, 2.0), 10.0)
     panels_width = min(panels_width, max(panels_height * cols / (rows * aspect), 3.0))
-    width = panels_width + 1.3 * sum(1 for s in scales.values() if s) + 0.8
-    height = panels_height + 1.0 + 0.4 * rows
-    fig, axes = plt.subplots(rows, cols, figsize=(width, height), squeeze=False,
-                             layout="constrained", dpi=110)
+    size = (panels_width + 1.3 * n_bars + 0.8, panels_height + 1.0 + 0.4 * rows)
+    return plt.subplots(rows, cols, figsize=size, squeeze=False, layout="constrained",
+                        dpi=110)
+
+
+def decorate(ax, lims, title):
+    """Axes in metres with equal aspect over lims."""
+    ax.set_xlim(lims[0], lims[1])
+    ax.set_ylim(lims[2], lims[3])
+    ax.set_aspect("equal", adjustable="datalim")
+    ax.set_xlabel("x [m]")
+    ax.set_ylabel("y [m]")
+    ax.set_title(title, fontsize=10)
+
+
+def render(parts, panels, scales, title, png, lims):
+    """Draw the panels (one {name: (time, key)} each) into png; its PNG text holds the
+    frames' times and the axes' boxes (fsi:time, fsi:axes) for tests and scripts."""
+    import matplotlib.pyplot as plt
+    fig, axes = figure(len(panels), sum(1 for s in scales.values() if s), lims)
     axes_drawn, coloured = [], {}
-    for i, keys in enumerate(panels):
-        ax = axes.flat[i]
+    for ax, keys in zip(axes.flat, panels):
         drawn, col = draw_panel(ax, parts, keys, scales)
         coloured.update(col)
         axes_drawn.append((ax, drawn))
-        ax.set_xlim(xmin, xmax)
-        ax.set_ylim(ymin, ymax)
-        ax.set_aspect("equal", adjustable="datalim")
-        ax.set_xlabel("x [m]")
-        ax.set_ylabel("y [m]")
-        ax.set_title(panel_title(parts, keys), fontsize=10)
+        decorate(ax, lims, panel_title(parts, keys))
     for ax in axes.flat[len(panels):]:
         ax.set_visible(False)
     for p in parts:
         if p.name in coloured:
             _, _, _, _, extend, label = scales[p.name]
-            fig.colorbar(coloured[p.name], ax=axes, shrink=0.8 if rows == 1 else 0.6,
-                         extend=extend,
-                         label="%s: %s" % (p.name, label))
+            fig.colorbar(coloured[p.name], ax=axes, shrink=0.8 if axes.shape[0] == 1 else 0.6,
+                         extend=extend, label="%s: %s" % (p.name, label))
     fig.suptitle(title)
     size_markers(fig, axes_drawn)
     meta = {"fsi:time": ";".join(panel_title(parts, k) for k in panels),
@@ -455,40 +464,55 @@ def write_gif(pngs, gif, fps):
                    duration=int(round(1000.0 / fps)))
 
 
-def run(a):
-    parts = open_participants(a.out)
-    if a.field_spec is not None and all(field_for(p, a.field_spec) is None for p in parts):
-        have = "; ".join("%s: %s" % (p.name, ", ".join(
-            f for f in FIELDS if f in p.frame(p.frames[0][1])) or "none of them")
-            for p in parts)
-        raise UsageError("%s: no participant has the field '%s' (%s)" % (a.out, a.field, have))
-    title = title_of(a.out)
-    if a.frames or a.movie:
-        panels = all_frames(parts)
-        if a.movie:
-            gif = a.file or os.path.join(a.out, "view.gif")
-            folder = os.path.splitext(gif)[0] + "_frames"
-        else:
-            folder = a.file or os.path.join(a.out, "view_frames")
-        os.makedirs(folder, exist_ok=True)
-        scales = plan(parts, a.field_spec, panels)
-        lims = bounds(parts, panels)
-        pngs = []
-        for i, keys in enumerate(panels):
-            png = os.path.join(folder, "frame_%06d.png" % i)
-            render(parts, [keys], scales, title, png, lims)
-            pngs.append(png)
-        print("%s: %d frames in %s" % (PROG, len(pngs), folder))
-        if a.movie:
-            write_gif(pngs, gif, a.fps)
-            print("%s: %s (%d frames at %g per second)" % (PROG, gif, len(pngs), a.fps))
+def check_field(parts, a):
+    """UsageError when no participant has the asked field."""
+    if a.field_spec is None or any(field_for(p, a.field_spec) is not None for p in parts):
         return
+    have = "; ".join("%s: %s" % (p.name, ", ".join(
+        f for f in FIELDS if f in p.frame(p.frames[0][1])) or "none of them") for p in parts)
+    raise UsageError("%s: no participant has the field '%s' (%s)" % (a.out, a.field, have))
+
+
+def view_frames(parts, a, title):
+    """--frames and --movie: one PNG per frame in a folder (earlier frame_*.png in it
+    removed), with --movie the GIF of them."""
+    panels = all_frames(parts)
+    gif = a.file or os.path.join(a.out, "view.gif")
+    if a.movie:
+        folder = os.path.splitext(gif)[0] + "_frames"
+    else:
+        folder = a.file or os.path.join(a.out, "view_frames")
+    os.makedirs(folder, exist_ok=True)
+    for old in os.listdir(folder):
+        if old.startswith("frame_") and old.endswith(".png"):
+            os.remove(os.path.join(folder, old))
+    scales, lims = plan(parts, a.field_spec, panels), bounds(parts, panels)
+    pngs = [os.path.join(folder, "frame_%06d.png" % i) for i in range(len(panels))]
+    for keys, png in zip(panels, pngs):
+        render(parts, [keys], scales, title, png, lims)
+    print("%s: %d frames in %s" % (PROG, len(pngs), folder))
+    if a.movie:
+        write_gif(pngs, gif, a.fps)
+        print("%s: %s (%d frames at %g per second)" % (PROG, gif, len(pngs), a.fps))
+
+
+def view_times(parts, a, title):
+    """One PNG: the frames nearest --time's times (the last frame without it)."""
     times = a.times if a.times is not None else [max(p.frames[-1][0] for p in parts)]
     panels = [{p.name: p.nearest(t) for p in parts} for t in times]
-    scales = plan(parts, a.field_spec, panels)
     png = a.file or os.path.join(a.out, "view.png")
-    render(parts, panels, scales, title, png, bounds(parts, panels))
+    render(parts, panels, plan(parts, a.field_spec, panels), title, png,
+           bounds(parts, panels))
     print("%s: %s (%s)" % (PROG, png, "; ".join(panel_title(parts, k) for k in panels)))
+
+
+def run(a):
+    parts = open_participants(a.out)
+    check_field(parts, a)
+    if a.frames or a.movie:
+        view_frames(parts, a, title_of(a.out))
+    else:
+        view_times(parts, a, title_of(a.out))
 
 
 def main(argv):
