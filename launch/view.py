@@ -376,12 +376,13 @@ def panel_title(parts, keys):
 
 
 def grid_shape(n, aspect):
-    """(rows, cols) for n panels of height/width aspect: near-square figures."""
+    """(rows, cols) for n panels of height/width aspect: a figure near 0.7 as high as
+    wide, few empty places."""
     best = None
     for cols in range(1, n + 1):
         rows = -(-n // cols)
         ratio = rows * aspect / cols
-        score = abs(math.log(ratio / 0.7))
+        score = abs(math.log(ratio / 0.7)) + 0.5 * (rows * cols - n)
         if best is None or score < best[0]:
             best = (score, rows, cols)
     return best[1], best[2]
