@@ -126,7 +126,11 @@ def main():
             ax.set_ylim(*a.ylim)
             ax.set_aspect("equal")
             ax.tick_params(labelsize=6)
-    fig.colorbar(d, ax=axes, shrink=0.6, label="damage (solid)")
+            if row == len(runs) - 1:
+                ax.set_xlabel("x [m]", fontsize=8)
+            if col == 0:
+                ax.set_ylabel("y [m]", fontsize=8)
+    fig.colorbar(d, ax=axes, shrink=0.6, label="solid damage [-]")
     fig.colorbar(sc, ax=axes, shrink=0.6, label="water pressure [Pa]")
     fig.suptitle(a.title)
     fig.savefig(a.png, dpi=110)

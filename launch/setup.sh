@@ -13,6 +13,7 @@ PACKAGES=(
   libinih-dev
   libsuitesparse-dev
   python3-matplotlib python3-h5py python3-numpy python3-scipy
+  python3-pil
   paraview python3-paraview
   iproute2 util-linux
 )
