@@ -11,7 +11,8 @@ its values (flag_meanings, one word per value) and holds only those values (or s
 of those bits); OUT/NAME.xmf parses as XML and every HDF5 file and dataset it names
 exists with the row count it declares, and every grid has the same constants
 (grid-centred attributes). When OUT/run.xmf exists it includes the
-sidecar of every NAME, and every sidecar it includes exists. Prints "NAME FRAMES_IN_H5 GRIDS_IN_XMF" per
+sidecar of every NAME, and every sidecar it includes exists. When OUT/probes.csv has
+been begun, its second line names a unit for every column of the header. Prints "NAME FRAMES_IN_H5 GRIDS_IN_XMF" per
 name and exits 0, or prints what is wrong and exits 1.
 """
 import os
@@ -126,6 +127,20 @@ def check_run_xmf(path, names):
                          % (path, hrefs, missing, absent))
 
 
+def check_probes_units(path):
+    """probes.csv's '# units: ...' line: one unit per column of the header, none unknown."""
+    with open(path) as f:
+        header, units = f.readline(), f.readline()
+    if not header:
+        return              # created, not yet written
+    columns = header.rstrip("\n").split(",")
+    if not units.startswith("# units: "):
+        raise ValueError("%s: the second line is not '# units: ...': %r" % (path, units))
+    names = units[len("# units: "):].rstrip("\n").split(",")
+    if len(names) != len(columns) or "?" in names or "" in names:
+        raise ValueError("%s: units %s for the columns %s" % (path, names, columns))
+
+
 def main():
     out, names = sys.argv[1], sys.argv[2:]
     for name in names:
@@ -134,6 +149,8 @@ def main():
         print(name, frames, grids)
     if os.path.exists(os.path.join(out, "run.xmf")):
         check_run_xmf(os.path.join(out, "run.xmf"), names)
+    if os.path.exists(os.path.join(out, "probes.csv")):
+        check_probes_units(os.path.join(out, "probes.csv"))
     return 0
 
 
