@@ -318,10 +318,12 @@ static hid_t create_file(const char *path)
     return f;
 }
 
-static int write_attr(hid_t loc, const char *name, hid_t ftype, hid_t mtype,
-                      const void *value)
+/* An attribute of n values, or a scalar one when n is 0. */
+static int write_attr_n(hid_t loc, const char *name, hid_t ftype, hid_t mtype,
+                        const void *value, int n)
 {
-    hid_t space = H5Screate(H5S_SCALAR);
+    hsize_t dims[1] = {(hsize_t)n};
+    hid_t space = n > 0 ? H5Screate_simple(1, dims, NULL) : H5Screate(H5S_SCALAR);
     if (space < 0)
         return -1;
     hid_t a = H5Acreate2(loc, name, ftype, space, H5P_DEFAULT, H5P_DEFAULT);
@@ -330,6 +332,12 @@ static int write_attr(hid_t loc, const char *name, hid_t ftype, hid_t mtype,
         H5Aclose(a);
     H5Sclose(space);
     return rc;
+}
+
+static int write_attr(hid_t loc, const char *name, hid_t ftype, hid_t mtype,
+                      const void *value)
+{
+    return write_attr_n(loc, name, ftype, mtype, value, 0);
 }
 
 /* Fixed-length, null-terminated: reads back as a plain string in h5dump, h5py
@@ -346,21 +354,6 @@ static int write_attr_string(hid_t loc, const char *name, const char *value)
     return rc;
 }
 
-/* An int32 array attribute (flag_values, flag_masks). */
-static int write_attr_ints(hid_t loc, const char *name, const int32_t *values, int n)
-{
-    hsize_t dims[1] = {(hsize_t)n};
-    hid_t space = H5Screate_simple(1, dims, NULL);
-    if (space < 0)
-        return -1;
-    hid_t a = H5Acreate2(loc, name, H5T_STD_I32LE, space, H5P_DEFAULT, H5P_DEFAULT);
-    int rc = (a >= 0 && H5Awrite(a, H5T_NATIVE_INT32, values) >= 0) ? 0 : -1;
-    if (a >= 0)
-        H5Aclose(a);
-    H5Sclose(space);
-    return rc;
-}
-
 /* The attributes saying what a dataset holds: unit, description and, for flags, the
  * CF conventions' flag_values or flag_masks with flag_meanings. */
 static int write_dataset_info(hid_t d, const dataset_info *info)
@@ -371,8 +364,8 @@ static int write_dataset_info(hid_t d, const dataset_info *info)
         (info->description && write_attr_string(d, "description", info->description) < 0))
         return -1;
     if (info->nflags > 0 &&
-        (write_attr_ints(d, info->flag_kind == FSI_H5_FLAG_MASKS ? "flag_masks" : "flag_values",
-                         info->flag_values, info->nflags) < 0 ||
+        (write_attr_n(d, info->flag_kind == FSI_H5_FLAG_MASKS ? "flag_masks" : "flag_values",
+                      H5T_STD_I32LE, H5T_NATIVE_INT32, info->flag_values, info->nflags) < 0 ||
          write_attr_string(d, "flag_meanings", info->flag_meanings) < 0))
         return -1;
     return 0;
