@@ -18,7 +18,7 @@ import numpy as np
 
 def history(run):
     with open(run + "/probes.csv", newline="") as f:
-        rows = list(csv.DictReader(f))
+        rows = list(csv.DictReader(line for line in f if not line.startswith("#")))
     t = np.array([float(r["time"]) for r in rows])
     p = np.array([float(r["wall_foot_p"]) for r in rows])
     return t, p

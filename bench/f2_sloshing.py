@@ -33,7 +33,7 @@ DATA = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "data",
 
 def read_probe(run):
     with open(os.path.join(run, "probes.csv"), newline="") as f:
-        rows = list(csv.reader(f))
+        rows = list(csv.reader(line for line in f if not line.startswith("#")))
     col = rows[0].index("FS1_eta")
     t, eta = [], []
     for r in rows[1:]:

@@ -23,9 +23,9 @@ def solvers(out_dir):
 
 
 def read_probes(out_dir):
-    """probes.csv as {column: [floats]}."""
+    """probes.csv as {column: [floats]} (the '# units: ...' line skipped)."""
     with open(os.path.join(out_dir, "probes.csv"), newline="") as f:
-        rows = list(csv.reader(f))
+        rows = list(csv.reader(line for line in f if not line.startswith("#")))
     header, data = rows[0], rows[1:]
     return {name: [float(r[i]) for r in data] for i, name in enumerate(header)}
 

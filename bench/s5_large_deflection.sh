@@ -81,7 +81,7 @@ row() {  # row NAME SOLVER LAW N NOTE: one table row from the run's probes and l
 import csv, math, sys
 path, solver, law, n, points, wall, note = sys.argv[1:8]
 dv_ref, dh_ref, rv_ref, rh_ref = (float(v) for v in sys.argv[8:12])
-rows = list(csv.DictReader(open(path)))
+rows = list(csv.DictReader(l for l in open(path) if not l.startswith("#")))
 last = rows[-1]
 mean = lambda q: 0.5 * (float(last["tip_above_" + q]) + float(last["tip_below_" + q]))
 # The load points down and the tip moves back (-x): deflections are the magnitudes.
@@ -131,7 +131,8 @@ echo
 echo "003's dynamic run: after the ramp (t >= 1.5 ms) the undamped tip oscillates with"
 "$PY" - "$OUT/tlsph_svk_n10_003dynamic/probes.csv" <<'PY'
 import csv, sys
-rows = [r for r in csv.DictReader(open(sys.argv[1])) if float(r["time"]) >= 0.0015]
+rows = [r for r in csv.DictReader(l for l in open(sys.argv[1]) if not l.startswith("#"))
+        if float(r["time"]) >= 0.0015]
 dv = [(-0.5e3 * (float(r["tip_above_uy"]) + float(r["tip_below_uy"])), 1e3 * float(r["time"]))
       for r in rows]
 (lo, tlo), (hi, thi) = min(dv), max(dv)

@@ -65,7 +65,7 @@ wall_of() {  # wall_of NAME: the run's wall time as fsi run reported it [s]
 last_probe() {  # last_probe DIR COLUMN: the probe's last value
   "$PY" - "$1" "$2" <<'PY'
 import csv, sys
-rows = list(csv.DictReader(open(sys.argv[1] + "/probes.csv")))
+rows = list(csv.DictReader(l for l in open(sys.argv[1] + "/probes.csv") if not l.startswith("#")))
 print(rows[-1][sys.argv[2]])
 PY
 }

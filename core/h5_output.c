@@ -27,6 +27,12 @@ typedef struct {
     int is_int;
 } field_rec;
 
+/* A value of a frame shared by all its points (fsi_h5_write_frame_constant). */
+typedef struct {
+    char *name;
+    double value;
+} constant_rec;
+
 typedef struct {
     int frame;
     double time;
@@ -34,7 +40,21 @@ typedef struct {
     field_rec *fields;
     int nfields;
     int cap;
+    constant_rec *constants;
+    int nconstants;
 } frame_rec;
+
+/* What a dataset holds (fsi_h5_describe, fsi_h5_name_flags), keyed by the field's
+ * name, "static/NAME" for a static field. */
+typedef struct {
+    char *key;
+    char *unit;
+    char *description;
+    int flag_kind;          /* FSI_H5_FLAG_VALUES or _MASKS, when nflags > 0 */
+    int nflags;
+    int32_t *flag_values;
+    char *flag_meanings;
+} dataset_info;
 
 struct fsi_h5_writer {
     char *dir;         /* the output folder */
@@ -58,6 +78,8 @@ struct fsi_h5_writer {
     int order_n;
     unsigned char *scratch; /* rows in stored order */
     size_t scratch_bytes;
+    dataset_info *info;     /* fsi_h5_describe, fsi_h5_name_flags */
+    int ninfo;
 };
 
 /* ------------------------------------------------------------------ helpers */
@@ -86,7 +108,23 @@ static void frame_rec_clear(frame_rec *f)
     for (int i = 0; i < f->nfields; i++)
         free(f->fields[i].name);
     free(f->fields);
+    for (int i = 0; i < f->nconstants; i++)
+        free(f->constants[i].name);
+    free(f->constants);
     memset(f, 0, sizeof *f);
+}
+
+static int frame_rec_add_constant(frame_rec *f, const char *name, double value)
+{
+    constant_rec *p = realloc(f->constants, (size_t)(f->nconstants + 1) * sizeof *p);
+    if (!p)
+        return -1;
+    f->constants = p;
+    char *copy = strdup(name);
+    if (!copy)
+        return -1;
+    f->constants[f->nconstants++] = (constant_rec){copy, value};
+    return 0;
 }
 
 static int frame_rec_add(frame_rec *f, const char *name, int ncomp, int is_int)
@@ -120,6 +158,47 @@ static int push_done(fsi_h5_writer *w)
     w->done[w->ndone++] = w->cur;
     memset(&w->cur, 0, sizeof w->cur);
     return 0;
+}
+
+/* ------------------------------------------------ what datasets hold */
+
+static const dataset_info vertex_index_info = {
+    "index", "1", "Polyvertex connectivity of the sidecar: point i is vertex i (XDMF readers "
+    "make no cells without it).", 0, 0, NULL, NULL};
+
+static const dataset_info *find_info(const fsi_h5_writer *w, const char *key)
+{
+    for (int i = 0; i < w->ninfo; i++)
+        if (strcmp(w->info[i].key, key) == 0)
+            return &w->info[i];
+    return NULL;
+}
+
+/* The entry of key, created empty when missing; NULL when memory runs out. */
+static dataset_info *info_entry(fsi_h5_writer *w, const char *key)
+{
+    dataset_info *e = (dataset_info *)find_info(w, key);
+    if (e)
+        return e;
+    dataset_info *p = realloc(w->info, (size_t)(w->ninfo + 1) * sizeof *p);
+    if (!p)
+        return NULL;
+    w->info = p;
+    e = &w->info[w->ninfo];
+    *e = (dataset_info){.key = strdup(key)};
+    if (!e->key)
+        return NULL;
+    w->ninfo++;
+    return e;
+}
+
+static void info_clear(dataset_info *e)
+{
+    free(e->key);
+    free(e->unit);
+    free(e->description);
+    free(e->flag_values);
+    free(e->flag_meanings);
 }
 
 /* ------------------------------------------------------- failure messages */
@@ -239,10 +318,12 @@ static hid_t create_file(const char *path)
     return f;
 }
 
-static int write_attr(hid_t loc, const char *name, hid_t ftype, hid_t mtype,
-                      const void *value)
+/* An attribute of n values, or a scalar one when n is 0. */
+static int write_attr_n(hid_t loc, const char *name, hid_t ftype, hid_t mtype,
+                        const void *value, int n)
 {
-    hid_t space = H5Screate(H5S_SCALAR);
+    hsize_t dims[1] = {(hsize_t)n};
+    hid_t space = n > 0 ? H5Screate_simple(1, dims, NULL) : H5Screate(H5S_SCALAR);
     if (space < 0)
         return -1;
     hid_t a = H5Acreate2(loc, name, ftype, space, H5P_DEFAULT, H5P_DEFAULT);
@@ -251,6 +332,12 @@ static int write_attr(hid_t loc, const char *name, hid_t ftype, hid_t mtype,
         H5Aclose(a);
     H5Sclose(space);
     return rc;
+}
+
+static int write_attr(hid_t loc, const char *name, hid_t ftype, hid_t mtype,
+                      const void *value)
+{
+    return write_attr_n(loc, name, ftype, mtype, value, 0);
 }
 
 /* Fixed-length, null-terminated: reads back as a plain string in h5dump, h5py
@@ -267,9 +354,27 @@ static int write_attr_string(hid_t loc, const char *name, const char *value)
     return rc;
 }
 
-/* Dataset shaped [n][ncomp], or [n] for one component. */
+/* The attributes saying what a dataset holds: unit, description and, for flags, the
+ * CF conventions' flag_values or flag_masks with flag_meanings. */
+static int write_dataset_info(hid_t d, const dataset_info *info)
+{
+    if (!info)
+        return 0;
+    if ((info->unit && write_attr_string(d, "unit", info->unit) < 0) ||
+        (info->description && write_attr_string(d, "description", info->description) < 0))
+        return -1;
+    if (info->nflags > 0 &&
+        (write_attr_n(d, info->flag_kind == FSI_H5_FLAG_MASKS ? "flag_masks" : "flag_values",
+                      H5T_STD_I32LE, H5T_NATIVE_INT32, info->flag_values, info->nflags) < 0 ||
+         write_attr_string(d, "flag_meanings", info->flag_meanings) < 0))
+        return -1;
+    return 0;
+}
+
+/* Dataset shaped [n][ncomp], or [n] for one component, with the attributes of info
+ * (NULL: none). */
 static int write_dataset(hid_t loc, const char *name, hid_t ftype, hid_t mtype,
-                         const void *data, int n, int ncomp)
+                         const void *data, int n, int ncomp, const dataset_info *info)
 {
     if (n < 0 || ncomp < 1 || (n > 0 && !data))
         return -1;
@@ -281,7 +386,8 @@ static int write_dataset(hid_t loc, const char *name, hid_t ftype, hid_t mtype,
     if (space >= 0 && dcpl >= 0)
         d = H5Dcreate2(loc, name, ftype, space, H5P_DEFAULT, dcpl, H5P_DEFAULT);
     /* HDF5 rejects a NULL buffer even for zero elements. */
-    if (d >= 0 && (n == 0 || H5Dwrite(d, mtype, H5S_ALL, H5S_ALL, H5P_DEFAULT, data) >= 0))
+    if (d >= 0 && (n == 0 || H5Dwrite(d, mtype, H5S_ALL, H5S_ALL, H5P_DEFAULT, data) >= 0) &&
+        write_dataset_info(d, info) == 0)
         rc = 0;
     if (d >= 0)
         H5Dclose(d);
@@ -434,8 +540,13 @@ static int write_static_file(fsi_h5_writer *w, const char *field, hid_t ftype, h
         if (s.found) {
             h5_error("h5 output: static field '%s' written twice to %s", field, path);
             rc = -1;
-        } else if (rc == 0 && write_dataset(file, field, ftype, mtype, data, n, ncomp) < 0)
-            rc = -1;
+        } else {
+            char *key = str_printf("static/%s", field);
+            if (!key || (rc == 0 && write_dataset(file, field, ftype, mtype, data, n, ncomp,
+                                                  find_info(w, key)) < 0))
+                rc = -1;
+            free(key);
+        }
     }
     char what[300];
     snprintf(what, sizeof what, "static field '%s' (%d x %d)", field ? field : "(none)", n,
@@ -473,7 +584,7 @@ static int ensure_vertices(fsi_h5_writer *w, int n)
         else
             rc = publish(file,
                          write_dataset(file, "index", H5T_STD_I32LE, H5T_NATIVE_INT32, index,
-                                       n, 1),
+                                       n, 1, &vertex_index_info),
                          tmp, path, "vertex index");
     } else
         h5_error("h5 output: out of memory for the vertex index of %d points", n);
@@ -553,6 +664,15 @@ static void xmf_grid(FILE *f, const fsi_h5_writer *w, const frame_rec *fr)
         xmf_data_item(f, w, fr, fd->name, fd->ncomp, fd->is_int);
         fputs("        </Attribute>\n", f);
     }
+    /* A grid-centred attribute: ParaView's three XDMF readers give it as field data. */
+    for (int i = 0; i < fr->nconstants; i++) {
+        fputs("        <Attribute Name=\"", f);
+        xml_escaped(f, fr->constants[i].name);
+        fprintf(f, "\" AttributeType=\"Scalar\" Center=\"Grid\">\n"
+                   "          <DataItem Dimensions=\"1\" NumberType=\"Float\" Precision=\"8\" "
+                   "Format=\"XML\">%.17g</DataItem>\n"
+                   "        </Attribute>\n", fr->constants[i].value);
+    }
     fputs("      </Grid>\n", f);
 }
 
@@ -572,8 +692,10 @@ static int write_xmf(const fsi_h5_writer *w)
           "<!DOCTYPE Xdmf SYSTEM \"Xdmf.dtd\" []>\n"
           "<Xdmf Version=\"3.0\">\n"
           "  <Domain>\n"
-          "    <Grid Name=\"particles\" GridType=\"Collection\" CollectionType=\"Temporal\">\n",
-          f);
+          "    <Grid Name=\"", f);
+    /* Named after the participant: the block's name when run.xmf includes the series. */
+    xml_escaped(f, w->name);
+    fputs("\" GridType=\"Collection\" CollectionType=\"Temporal\">\n", f);
     for (int i = 0; i < w->ndone; i++)
         xmf_grid(f, w, &w->done[i]);
     fputs("    </Grid>\n"
@@ -645,6 +767,21 @@ static herr_t field_of_frame(hid_t group, const char *name, const H5L_info_t *in
     return frame_rec_add(f, name, rank == 2 ? (int)dims[1] : 1, is_int) == 0 ? 0 : -1;
 }
 
+/* A constant of a frame file read back: a root attribute other than time, step and
+ * frame (fsi_h5_write_frame_constant). */
+static herr_t constant_of_frame(hid_t file, const char *name, const H5A_info_t *info, void *data)
+{
+    (void)info;
+    if (strcmp(name, "time") == 0 || strcmp(name, "step") == 0 || strcmp(name, "frame") == 0)
+        return 0;
+    double value;
+    hid_t a = H5Aopen(file, name, H5P_DEFAULT);
+    const int ok = a >= 0 && H5Aread(a, H5T_NATIVE_DOUBLE, &value) >= 0;
+    if (a >= 0)
+        H5Aclose(a);
+    return ok && frame_rec_add_constant(data, name, value) == 0 ? 0 : -1;
+}
+
 /* A restarted run (FSI_RESTART_FRAMES = F, docs/checkpoints.md) keeps frames 0 .. F-1 of
  * the run it goes on with: their records are read back from their files (time, points,
  * fields), so that the master and the sidecar list them again; later frames (written
@@ -672,6 +809,9 @@ static int resume_frames(fsi_h5_writer *w, int frames)
                 ok = 0;
             f.n = (int)dims[0];
             ok = ok && H5Literate(file, H5_INDEX_NAME, H5_ITER_INC, NULL, field_of_frame, &f) >= 0;
+            hsize_t at = 0;
+            ok = ok && H5Aiterate2(file, H5_INDEX_NAME, H5_ITER_INC, &at, constant_of_frame,
+                                   &f) >= 0;
             H5Fclose(file);
         }
         if (!ok || (w->cur = f, push_done(w)) != 0) {
@@ -746,12 +886,72 @@ fsi_h5_writer *fsi_h5_create(const char *dir, const char *name, const char *solv
         }
     } else
         remove_stale(w);
-    if (write_static_file(w, NULL, 0, 0, NULL, 0, 0) < 0 || write_master(w) < 0 ||
+    if (fsi_h5_describe(w, "position", "m",
+                        "Particle position in the current configuration.") != 0 ||
+        write_static_file(w, NULL, 0, 0, NULL, 0, 0) < 0 || write_master(w) < 0 ||
         write_xmf(w) < 0) {
         fsi_h5_close(w);
         return NULL;
     }
     return w;
+}
+
+int fsi_h5_describe(fsi_h5_writer *w, const char *field, const char *unit,
+                    const char *description)
+{
+    if (!w || !field || !unit || !*unit || !description || !*description) {
+        h5_error("h5 output: field '%s' described without a unit or a description",
+                 field ? field : "(null)");
+        return -1;
+    }
+    dataset_info *e = info_entry(w, field);
+    char *u = strdup(unit), *d = strdup(description);
+    if (!e || !u || !d) {
+        free(u);
+        free(d);
+        h5_error("h5 output: out of memory describing '%s'", field);
+        return -1;
+    }
+    free(e->unit);
+    free(e->description);
+    e->unit = u;
+    e->description = d;
+    return 0;
+}
+
+int fsi_h5_describe_fields(fsi_h5_writer *w, const fsi_h5_field_info *info, int n)
+{
+    for (int i = 0; i < n; i++)
+        if (fsi_h5_describe(w, info[i].field, info[i].unit, info[i].description) != 0)
+            return -1;
+    return 0;
+}
+
+int fsi_h5_name_flags(fsi_h5_writer *w, const char *field, int kind, int n,
+                      const int32_t *values, const char *meanings)
+{
+    if (!w || !field || n < 1 || !values || !meanings ||
+        (kind != FSI_H5_FLAG_VALUES && kind != FSI_H5_FLAG_MASKS)) {
+        h5_error("h5 output: bad flag names for '%s'", field ? field : "(null)");
+        return -1;
+    }
+    dataset_info *e = info_entry(w, field);
+    int32_t *v = malloc((size_t)n * sizeof *v);
+    char *m = strdup(meanings);
+    if (!e || !v || !m) {
+        free(v);
+        free(m);
+        h5_error("h5 output: out of memory naming the flags of '%s'", field);
+        return -1;
+    }
+    memcpy(v, values, (size_t)n * sizeof *v);
+    free(e->flag_values);
+    free(e->flag_meanings);
+    e->flag_kind = kind;
+    e->nflags = n;
+    e->flag_values = v;
+    e->flag_meanings = m;
+    return 0;
 }
 
 static int write_static(fsi_h5_writer *w, const char *field, hid_t ftype, hid_t mtype,
@@ -857,7 +1057,7 @@ int fsi_h5_begin_frame(fsi_h5_writer *w, int frame, double time, long step, int 
     w->file = create_file(w->frame_tmp);
     if (w->file < 0 || write_frame_attrs(w->file, time, step, frame) < 0 ||
         write_dataset(w->file, "position", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, position, n,
-                      FSI_DIM) < 0) {
+                      FSI_DIM, find_info(w, "position")) < 0) {
         report(w->frame_tmp, "frame %d, attributes or position", frame);
         abandon_frame(w);
         return -1;
@@ -889,7 +1089,8 @@ static int write_field(fsi_h5_writer *w, const char *field, hid_t ftype, hid_t m
     }
     errno = 0;
     cause_reset();
-    if (write_dataset(w->file, field, ftype, mtype, data, w->cur.n, ncomp) < 0 ||
+    if (write_dataset(w->file, field, ftype, mtype, data, w->cur.n, ncomp,
+                      find_info(w, field)) < 0 ||
         frame_rec_add(&w->cur, field, ncomp, is_int) < 0) {
         report(w->frame_tmp, "field '%s' of frame %d", field, w->cur.frame);
         w->frame_failed = 1;
@@ -910,6 +1111,26 @@ int fsi_h5_write_field_int(fsi_h5_writer *w, const char *field, const int32_t *d
 {
     return write_field(w, field, H5T_STD_I32LE, H5T_NATIVE_INT32, data, ncomp, 1,
                        sizeof *data);
+}
+
+int fsi_h5_write_frame_constant(fsi_h5_writer *w, const char *name, double value)
+{
+    if (!w || !name)
+        return -1;
+    if (!w->in_frame) {
+        h5_error("h5 output: constant '%s' written to %s outside a frame", name,
+                 w->frames_dir);
+        return -1;
+    }
+    errno = 0;
+    cause_reset();
+    if (write_attr(w->file, name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, &value) < 0 ||
+        frame_rec_add_constant(&w->cur, name, value) < 0) {
+        report(w->frame_tmp, "constant '%s' of frame %d", name, w->cur.frame);
+        w->frame_failed = 1;
+        return -1;
+    }
+    return 0;
 }
 
 int fsi_h5_end_frame(fsi_h5_writer *w)
@@ -970,6 +1191,9 @@ void fsi_h5_close(fsi_h5_writer *w)
     free(w->done);
     free(w->vertex_counts);
     free(w->scratch);
+    for (int i = 0; i < w->ninfo; i++)
+        info_clear(&w->info[i]);
+    free(w->info);
     free(w->dir);
     free(w->name);
     free(w->solver);

@@ -6,6 +6,9 @@
  *   /                      attributes: participant, solver, dimension, fsi_version
  *   /static/<field>        written once (e.g. id, initial position, mass)
  *   /frames/NNNNNN/<field> one file per output frame, attributes time [s], step, frame
+ *                          and the frame's constants (fsi_h5_write_frame_constant)
+ * Every dataset carries the attributes unit and description its field was given
+ * (fsi_h5_describe), integer flags also flag_values or flag_masks and flag_meanings.
  * Every frame holds "position" (n x FSI_DIM) and any number of point fields with
  * 1 (scalar), FSI_DIM (vector) or FSI_DIM*FSI_DIM (tensor) components.
  *
@@ -27,6 +30,29 @@ typedef struct fsi_h5_writer fsi_h5_writer;
 /* Creates DIR/NAME.h5, DIR/NAME.xmf and DIR/NAME.frames/ (its stale *.h5 removed).
  * Returns NULL with a message on stderr when they cannot be created. */
 fsi_h5_writer *fsi_h5_create(const char *dir, const char *name, const char *solver);
+
+/* What a dataset holds (docs/output.md, "Units and meanings"): every dataset of that
+ * name gets the attributes "unit" (SI, "1" for a pure number, e.g. "m/s", "kg/m^3")
+ * and "description" (one sentence). field is a frame field's name ("velocity") or
+ * "static/NAME" for a static field. "position" is described by the writer. Call before
+ * the dataset is written; the strings are copied; a second call replaces the first. */
+int fsi_h5_describe(fsi_h5_writer *w, const char *field, const char *unit,
+                    const char *description);
+
+typedef struct {
+    const char *field, *unit, *description;
+} fsi_h5_field_info;
+/* fsi_h5_describe for each of n entries. */
+int fsi_h5_describe_fields(fsi_h5_writer *w, const fsi_h5_field_info *info, int n);
+
+/* The named values of an integer field (field as for fsi_h5_describe), as the CF
+ * conventions write them: the attribute flag_values (FSI_H5_FLAG_VALUES: each point
+ * holds one of the values) or flag_masks (FSI_H5_FLAG_MASKS: each point holds any sum
+ * of the bits), n int32 values, and flag_meanings, their n names separated by single
+ * spaces ("fluid wall moving_boundary"). */
+enum { FSI_H5_FLAG_VALUES = 0, FSI_H5_FLAG_MASKS = 1 };
+int fsi_h5_name_flags(fsi_h5_writer *w, const char *field, int kind, int n,
+                      const int32_t *values, const char *meanings);
 
 /* Static data, written once before or between frames. ncomp components per point. */
 int fsi_h5_write_static_real(fsi_h5_writer *w, const char *field, const double *data,
@@ -51,6 +77,10 @@ int fsi_h5_write_field_real(fsi_h5_writer *w, const char *field, const double *d
                             int ncomp);
 int fsi_h5_write_field_int(fsi_h5_writer *w, const char *field, const int32_t *data,
                            int ncomp);
+/* A value of the open frame that is the same for all its points (the smoothing
+ * length): a float64 attribute of the frame's root group, and in the sidecar an
+ * attribute of the whole grid (ParaView shows it as field data). */
+int fsi_h5_write_frame_constant(fsi_h5_writer *w, const char *name, double value);
 /* Closes the frame: publishes its file, then rebuilds NAME.h5 and the sidecar. */
 int fsi_h5_end_frame(fsi_h5_writer *w);
 

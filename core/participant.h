@@ -66,8 +66,10 @@ typedef struct {
 fsi_participant *fsi_open(const char *name, const char *role, const char *case_path,
                           double dt_first);
 
-/* Declares a probe column "<probe>_<quantity>" before the first fsi_ongoing();
- * returns its index for fsi_set_probe, or -1. */
+/* Declares a probe column "<probe>_<quantity>" before the first fsi_ongoing(),
+ * optionally followed by its unit in brackets, "tip_uy [m]": probes.csv's header then
+ * names the column tip_uy and its units line gives m (docs/output.md). Returns its
+ * index for fsi_set_probe, or -1. */
 int fsi_add_probe(fsi_participant *p, const char *column);
 
 /* Blocks until the coupler grants the next window; 1 when there is one to compute,

@@ -39,6 +39,22 @@ static int reserve(char **buf, size_t *cap, size_t need)
     return 0;
 }
 
+/* The length of a column's name without its unit: "tip_ux [m]" is the name "tip_ux"
+ * and the unit "m" (*unit, *unit_len; "?" when the column gives none). */
+static size_t split_unit(const char *column, const char **unit, size_t *unit_len)
+{
+    size_t len = strlen(column);
+    const char *open = strstr(column, " [");
+    if (len > 3 && column[len - 1] == ']' && open && open > column) {
+        *unit = open + 2;
+        *unit_len = (size_t)(column + len - 1 - *unit);
+        return (size_t)(open - column);
+    }
+    *unit = "?";
+    *unit_len = 1;
+    return len;
+}
+
 int fsi_probes_csv_open(fsi_probes_csv *csv, const char *dir, const char *file, int n_columns,
                         char *const *column_names)
 {
@@ -52,19 +68,42 @@ int fsi_probes_csv_open(fsi_probes_csv *csv, const char *dir, const char *file, 
                  strerror(errno));
         return -1;
     }
-    size_t len = 5, cap = 0;
-    for (int i = 0; i < n_columns; i++)
-        len += strlen(column_names[i]) + 1;
+    /* Both lines together are at most twice the names' length plus the prefixes. */
+    size_t len = 32, cap = 0;
+    int units = 0;
+    for (int i = 0; i < n_columns; i++) {
+        const char *unit;
+        size_t unit_len;
+        len += 2 * strlen(column_names[i]) + 4;
+        split_unit(column_names[i], &unit, &unit_len);
+        units |= unit[0] != '?' || unit_len != 1;
+    }
     char *line = NULL;
-    if (reserve(&line, &cap, len + 2) != 0) {
+    if (reserve(&line, &cap, len) != 0) {
         snprintf(csv->error, sizeof csv->error, "out of memory for the header of %s",
                  csv->path);
         return -1;
     }
     size_t at = (size_t)snprintf(line, cap, "time");
-    for (int i = 0; i < n_columns; i++)
-        at += (size_t)snprintf(line + at, cap - at, ",%s", column_names[i]);
+    for (int i = 0; i < n_columns; i++) {
+        const char *unit;
+        size_t unit_len;
+        const size_t name_len = split_unit(column_names[i], &unit, &unit_len);
+        at += (size_t)snprintf(line + at, cap - at, ",%.*s", (int)name_len, column_names[i]);
+    }
     at += (size_t)snprintf(line + at, cap - at, "\n");
+    /* A comment line: readers that skip '#' lines (numpy, pandas with comment='#',
+     * gnuplot) read the file as before, and the header stays the first line. */
+    if (units) {
+        at += (size_t)snprintf(line + at, cap - at, "# units: s");
+        for (int i = 0; i < n_columns; i++) {
+            const char *unit;
+            size_t unit_len;
+            split_unit(column_names[i], &unit, &unit_len);
+            at += (size_t)snprintf(line + at, cap - at, ",%.*s", (int)unit_len, unit);
+        }
+        at += (size_t)snprintf(line + at, cap - at, "\n");
+    }
     int rc = write_line(csv, line, at);
     free(line);
     return rc;

@@ -64,11 +64,16 @@ int main(void)
     double time_step = fsi_case_get_real(c, "fluid", "time_step", 1e-3);
     fsi_h5_writer *out = fsi_h5_create(fsi_output_dir(p), fsi_participant_name(p),
                                        "linear_dashpot");
-    if (!out) {
+    /* What each field holds: attributes unit and description (docs/output.md). */
+    static const fsi_h5_field_info fields[] = {
+        {"force", "N", "Dashpot force on the solid particle, -c v_y - k_f u_y along y."},
+        {"pressure", "Pa", "The force's normal part per face of the particle's cell."},
+    };
+    if (!out || fsi_h5_describe_fields(out, fields, 2) != 0) {
         fsi_abort(p, "cannot create the output file");
         return FSI_EXIT_RUN_FAILURE;
     }
-    int probe_fy = fsi_add_probe(p, "load0_fy");
+    int probe_fy = fsi_add_probe(p, "load0_fy [N]");
     fsi_timers timers = {0};
     int t_loads = fsi_timer_index(&timers, "fluid_loads");
     loads l = {0};

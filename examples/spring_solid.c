@@ -157,14 +157,22 @@ int main(void)
         fsi_abort(p, "cannot create the output file");
         return FSI_EXIT_RUN_FAILURE;
     }
-    if (fsi_h5_write_static_real(out, "stiffness", s.stiffness, s.n, 1) != 0) {
+    static const fsi_h5_field_info fields[] = {
+        {"static/stiffness", "N/m", "Spring stiffness k_i of the particle's oscillator."},
+        {"velocity", "m/s", "Particle velocity."},
+        {"acceleration", "m/s^2", "Particle acceleration."},
+        {"load", "N", "Force from the fluid, held over the window."},
+        {"id", "1", "Particle index."},
+    };
+    if (fsi_h5_describe_fields(out, fields, 5) != 0 ||
+        fsi_h5_write_static_real(out, "stiffness", s.stiffness, s.n, 1) != 0) {
         fsi_abort(p, "cannot write the static data: %s", fsi_h5_last_error());
         fsi_h5_close(out);
         springs_free(&s);
         return FSI_EXIT_RUN_FAILURE;
     }
-    int probe_uy = fsi_add_probe(p, "p0_uy");
-    int probe_vy = fsi_add_probe(p, "p0_vy");
+    int probe_uy = fsi_add_probe(p, "p0_uy [m]");
+    int probe_vy = fsi_add_probe(p, "p0_vy [m/s]");
 
     fsi_timers timers = {0};
     int t_solve = fsi_timer_index(&timers, "solid_advance");

@@ -26,6 +26,7 @@
 #include "fluid_coupling.h"
 #include "fluid_geometry.h"
 #include "fluid_leak.h"
+#include "fluid_output_info.h"
 #include "fluid_parallel.h"
 #include "fluid_periodic.h"
 #include "fluid_probes.h"
@@ -393,7 +394,8 @@ static int setup(fluid_run *s, fsi_participant *part)
         snprintf(s->msg, ms, "cannot create the output file in %s", fsi_output_dir(part));
         return -1;
     }
-    if (write_static(s) != 0 || fsi_h5_set_point_order(s->out, s->order, s->n_fixed) != 0) {
+    if (fluid_output_describe(s->out) != 0 || fluid_scheme_describe_fields(s->out) != 0 ||
+        write_static(s) != 0 || fsi_h5_set_point_order(s->out, s->order, s->n_fixed) != 0) {
         snprintf(s->msg, ms, "cannot write the static particle data");
         return -1;
     }
@@ -673,6 +675,10 @@ static int write_frame(fluid_run *s, int frame, double t, long window)
              fsi_h5_write_field_real(s->out, "density", p->density, 1) != 0 ||
              fsi_h5_write_field_real(s->out, "pressure", p->pressure, 1) != 0 ||
              fsi_h5_write_field_int(s->out, "flags", flags, 1) != 0 ||
+             /* what ParaView's SPH interpolators take: mass, density and h */
+             fsi_h5_write_field_real(s->out, "mass", p->mass, 1) != 0 ||
+             fsi_h5_write_frame_constant(s->out, "smoothing_length",
+                                         fluid_scheme_smoothing_length(s->scheme)) != 0 ||
              fluid_scheme_write_fields(s->scheme, s->out) != 0;
     free(flags);
     return rc ? -1 : fsi_h5_end_frame(s->out);

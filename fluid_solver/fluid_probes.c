@@ -32,8 +32,9 @@ int fluid_probes_init(fluid_probes *pr, const fluid_geometry *g, fsi_participant
         pr->follow[q] = src->follow_box >= 0 ? &g->boxes[src->follow_box].motion : NULL;
         const char *name = fsi_case_object_name(src->section);
         char column[160];
+        /* "NAME_p [Pa]": the unit goes to probes.csv's units line. */
         snprintf(column, sizeof column, "%s_%s", name ? name : "probe",
-                 src->elevation ? "eta" : "p");
+                 src->elevation ? "eta [m]" : "p [Pa]");
         pr->column[q] = fsi_add_probe(part, column);
         if (pr->column[q] < 0) {
             snprintf(msg, msg_size, "[%s]: cannot add the probe column %s (too many probe "

@@ -116,6 +116,8 @@ void fluid_scheme_boundary_loads(const fluid_scheme *s, const fluid_particles *p
 
 /* The scheme's own fields of the current frame (e.g. flags of singular families). */
 int fluid_scheme_write_fields(const fluid_scheme *s, fsi_h5_writer *out);
+/* Their units, descriptions and flag names (fsi_h5_describe), before the first frame. */
+int fluid_scheme_describe_fields(fsi_h5_writer *out);
 
 /* From now on the scheme adds the wall time of its own phases (neighbour search,
  * operators, ...: names of its choosing) to t, so that the run log splits the main

@@ -21,6 +21,7 @@
 static const char *const run_files[] = {
     "case.resolved.ini", "run.log", "probes.csv",     /* fsi run, the coupler */
     "coupling.csv",                                   /* implicit coupling */
+    "run.xmf", "run.xmf.tmp",                         /* fsi run: fluid and solid */
     "traffic.lcmlog", "traffic.log",                  /* fsi run --log-traffic */
     "replay.log",                                     /* fsi replay */
     "c1_elastic_plate.png", "c1_elastic_plate.md",    /* fsi main (launch/fsi) */

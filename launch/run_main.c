@@ -27,6 +27,7 @@
 #include "private_network.h"
 #include "protocol.h"
 #include "run_plan.h"
+#include "run_xmf.h"
 #include "solver_registry.h"
 #include "supervisor.h"
 #include "timers.h"
@@ -418,6 +419,14 @@ int main(int argc, char **argv)
         }
         fsi_case_write_resolved(c, resolved);
         fclose(resolved);
+    }
+    /* Fluid and solid in one file for ParaView; written again on a restart (the same). */
+    const char *roles[8];
+    for (int i = 0; i < n_plan; i++)
+        roles[i] = plan[i].role;
+    if (fsi_write_run_xmf(out_abs, roles, n_plan) != 0) {
+        fsi_case_free(c);
+        return FSI_EXIT_RUN_FAILURE;
     }
 
     int isolated = o.lcm_url == NULL;

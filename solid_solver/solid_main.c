@@ -36,6 +36,7 @@
 #include "solid_interface.h"
 #include "solid_loads.h"
 #include "solid_model.h"
+#include "solid_output_info.h"
 #include "solid_probes.h"
 #include "solid_rk4.h"
 #include "state_store.h"
@@ -317,7 +318,8 @@ static int setup(solid_run *s, fsi_participant *part)
         snprintf(s->msg, ms, "cannot create the output file in %s", fsi_output_dir(part));
         return -1;
     }
-    if (write_static(s) != 0) {
+    if (solid_output_describe(s->out) != 0 || solid_model_describe_fields(s->out) != 0 ||
+        write_static(s) != 0) {
         snprintf(s->msg, ms, "cannot write the static particle data");
         return -1;
     }
@@ -586,6 +588,15 @@ static int write_frame(solid_run *s, int frame, double t, long window)
         fsi_h5_write_field_real(s->out, "interface_force", s->f_fluid, FSI_DIM) != 0 ||
         fsi_h5_write_field_real(s->out, "interface_pressure", s->p_fluid, 1) != 0 ||
         solid_model_write_fields(s->model, s->out) != 0)
+        return -1;
+    /* What ParaView's SPH interpolators take: mass, density and h (the displacement
+     * is written, so its scratch holds the masses now). */
+    for (int i = 0; i < p->n; i++)
+        s->scratch[i] = p->density[i] * p->volume[i];
+    if (fsi_h5_write_field_real(s->out, "mass", s->scratch, 1) != 0 ||
+        fsi_h5_write_field_real(s->out, "density", solid_model_density(s->model, p), 1) != 0 ||
+        fsi_h5_write_frame_constant(s->out, "smoothing_length",
+                                    solid_model_smoothing_length(s->model)) != 0)
         return -1;
     return fsi_h5_end_frame(s->out);
 }

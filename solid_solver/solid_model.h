@@ -61,6 +61,13 @@ const double *solid_model_density(const solid_model *m, const solid_particles *p
 
 /* Writes the model's fields (stress, damage, plastic strain, ...) into the open frame. */
 int solid_model_write_fields(const solid_model *m, fsi_h5_writer *out);
+/* Their units, descriptions and flag names (fsi_h5_describe), before the first frame. */
+int solid_model_describe_fields(fsi_h5_writer *out);
+
+/* The length h [m] of a kernel of support 2 h that covers a point's family: the
+ * kernel's own h (TLSPH, pseudo-spring SPH), half the horizon (NOSB-PD). The output
+ * gives it for ParaView's SPH interpolators (docs/output.md). */
+double solid_model_smoothing_length(const solid_model *m);
 
 /* Strain energy of the body [J, per unit thickness in 2D] for the energy check. */
 double solid_model_strain_energy(const solid_model *m, const solid_particles *p);

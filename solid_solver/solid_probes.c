@@ -40,8 +40,9 @@ int solid_probes_init(solid_probes *pr, const solid_geometry *g, const solid_par
         for (int quantity = 0; quantity < 2; quantity++)
             for (int d = 0; d < FSI_DIM; d++) {
                 char column[160];
-                snprintf(column, sizeof column, "%s_%c%c", name ? name : "probe",
-                         quantity ? 'v' : 'u', axis_name[d]);
+                /* "NAME_ux [m]": the unit goes to probes.csv's units line. */
+                snprintf(column, sizeof column, "%s_%c%c %s", name ? name : "probe",
+                         quantity ? 'v' : 'u', axis_name[d], quantity ? "[m/s]" : "[m]");
                 int index = fsi_add_probe(part, column);
                 if (index < 0) {
                     snprintf(msg, msg_size, "[%s]: cannot add the probe column %s (too many "

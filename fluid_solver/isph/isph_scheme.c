@@ -513,6 +513,26 @@ int fluid_scheme_write_fields(const fluid_scheme *s, fsi_h5_writer *out)
     return rc ? -1 : 0;
 }
 
+int fluid_scheme_describe_fields(fsi_h5_writer *out)
+{
+    static const fsi_h5_field_info info[] = {
+        {"surface_class", "1", "Where the particle is relative to the free surface "
+                               "(003 Fig. 2; flag_values, flag_meanings; walls and solid "
+                               "are not_fluid)."},
+        {"div_r", "1", "Divergence of the position with the uncorrected kernel, the "
+                       "free-surface detector (about the dimension inside the fluid)."},
+        {"surface_alpha", "1", "Skillen's coefficient of the shifting near the surface "
+                               "(003 Eq. 17)."},
+    };
+    static const int32_t values[] = {-1, ISPH_INTERIOR, ISPH_NEAR_SURFACE, ISPH_SURFACE,
+                                     ISPH_SPLASH};
+    return fsi_h5_describe_fields(out, info, 3) ||
+                   fsi_h5_name_flags(out, "surface_class", FSI_H5_FLAG_VALUES, 5, values,
+                                     "not_fluid interior near_surface surface splash")
+               ? -1
+               : 0;
+}
+
 void fluid_scheme_particles_reordered(fluid_scheme *s, const int *sorted, int n, void *scratch)
 {
     fluid_verlet_invalidate(&s->list);

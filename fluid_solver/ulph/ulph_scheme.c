@@ -354,6 +354,18 @@ int fluid_scheme_write_fields(const fluid_scheme *s, fsi_h5_writer *out)
     return rc;
 }
 
+int fluid_scheme_describe_fields(fsi_h5_writer *out)
+{
+    static const int32_t values[] = {0, ULPH_SINGULAR_SHAPE};
+    return fsi_h5_describe(out, "singular_shape", "1",
+                           "1 where the particle's shape matrix M could not be inverted, "
+                           "so its gradients are zero (docs/ulph.md).") ||
+                   fsi_h5_name_flags(out, "singular_shape", FSI_H5_FLAG_VALUES, 2, values,
+                                     "regular singular_shape")
+               ? -1
+               : 0;
+}
+
 /* State between steps: the density filter when it is due, the candidate lists (the
  * operators' rows are derived from them again, as after a build), the Verlet
  * integrator's previous state. The predictor-corrector keeps none. */

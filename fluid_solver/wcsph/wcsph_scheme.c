@@ -259,6 +259,12 @@ int fluid_scheme_write_fields(const fluid_scheme *s, fsi_h5_writer *out)
     return 0;
 }
 
+int fluid_scheme_describe_fields(fsi_h5_writer *out)
+{
+    (void)out;
+    return 0;
+}
+
 /* State between steps: the candidate lists (the rows are derived from them again, as
  * after a build) and the Verlet integrator's previous state; the predictor-corrector
  * keeps none, and delta-SPH has no filter. */

@@ -320,6 +320,32 @@ int64_t nosbpd_broken_bond_count(const solid_model *m)
     return m->n_broken;
 }
 
+int solid_model_describe_fields(fsi_h5_writer *out)
+{
+    static const fsi_h5_field_info info[] = {
+        {"stress", "Pa", "Cauchy stress (row-major; the in-plane block in 2-D)."},
+        {"damage", "1", "Volume-weighted fraction of the point's bonds that are broken "
+                        "(000 Eq. 49; 0 intact, 1 fully separated)."},
+        {"equivalent_plastic_strain", "1", "Accumulated equivalent plastic strain "
+                                           "sqrt(2/3 e_p : e_p)."},
+        {"intact_bonds", "1", "Number of the point's bonds not broken."},
+        {"no_force_state", "1", "1 for a point without a force state (its shape tensor "
+                                "singular or its deformation inverted, docs/nosbpd.md)."},
+    };
+    static const int32_t values[] = {0, 1};
+    return fsi_h5_describe_fields(out, info, 5) ||
+                   fsi_h5_name_flags(out, "no_force_state", FSI_H5_FLAG_VALUES, 2, values,
+                                     "force_state no_force_state")
+               ? -1
+               : 0;
+}
+
+/* Half the horizon: a kernel of support 2 h then spans the family. */
+double solid_model_smoothing_length(const solid_model *m)
+{
+    return 0.5 * m->delta;
+}
+
 double nosbpd_horizon(const solid_model *m)
 {
     return m->delta;

@@ -301,6 +301,20 @@ int64_t solid_model_interaction_count(const solid_model *m)
     return m->family.n_bonds;
 }
 
+int solid_model_describe_fields(fsi_h5_writer *out)
+{
+    static const fsi_h5_field_info info[] = {
+        {"stress", "Pa", "Cauchy stress (row-major; the in-plane block in 2-D)."},
+        {"jacobian", "1", "det F, the ratio of current to reference volume."},
+    };
+    return fsi_h5_describe_fields(out, info, 2);
+}
+
+double solid_model_smoothing_length(const solid_model *m)
+{
+    return m->h;
+}
+
 /* Total Lagrangian: the reference density (solid_model.h). */
 const double *solid_model_density(const solid_model *m, const solid_particles *p)
 {

@@ -66,7 +66,7 @@ weight = 1000 * 9.81 * 2.0 * 1.0
 print("total load on the plate at t = %.3g s: (%.2f, %.2f) N/m; weight of the water %.1f N/m: %+.2f %%"
       % (t_last, load[0], load[1], -weight, 100 * (-load[1] / weight - 1)))
 ok &= abs(load[0]) < 1e-6 * weight
-rows = list(csv.DictReader(open(out + "/probes.csv")))
+rows = list(csv.DictReader(l for l in open(out + "/probes.csv") if not l.startswith("#")))
 late = [-float(r["mid_uy"]) for r in rows if float(r["time"]) >= 0.05]
 q = 9.81 * (1000 * 2.0 + 2700 * 0.05)
 bending = 12 * q * (1 - 0.34 ** 2) / (384 * 67.5e9 * 0.05 ** 3)

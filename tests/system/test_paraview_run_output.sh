@@ -3,7 +3,12 @@
 # XDMF reader) opens a coupled run's output: both participants' frames fall on the
 # same times (the coupler sets them), with the right particle counts, one vertex
 # cell per particle (cells == points, else nothing shows), fields and initial
-# positions.
+# positions. Then the combined file run/run.xmf (paraview_check_run.py): the three
+# readers give both participants as two blocks (or pieces) with their arrays, for the
+# example participants and for a short C1 run of the real solvers, whose frames hold
+# what ParaView's SPH interpolators take: mass, density and the smoothing length (field
+# data); the SPH interpolator on the fluid block gives a Shepard sum of 1 within 5 %
+# and the particles' density.
 source "$(dirname "$0")/lib.sh"
 command -v pvbatch >/dev/null || fail "pvbatch not found; run launch/setup.sh"
 small_case case.ini 0.3
@@ -19,4 +24,16 @@ pvbatch "$check" run/solid.xmf --dim 2 --times "$times" --counts 50,50,50,50,50,
 pvbatch "$check" run/fluid.xmf --dim 2 --times "$times" --counts 50,50,50,50,50,50,50 \
   --fields force:vector,pressure:scalar --point 0:0=0,0.01 --value 0:force:0:1=0 \
   || fail "ParaView does not read the fluid's output as written"
-pass "ParaView (3 readers) reads both participants' series: 7 frames at the same times, 50 particles and 50 cells, all fields"
+pvbatch "$FSI_SOURCE_DIR/tests/system/paraview_check_run.py" run/run.xmf --times "$times" \
+  --block fluid=force,pressure --block solid=velocity,acceleration,load,id >combined.txt 2>&1 ||
+  { cat combined.txt; fail "ParaView does not open run/run.xmf with both participants"; }
+
+"$FSI_RUN" "$FSI_SOURCE_DIR/cases/c1_elastic_plate.ini" --out c1 --set run.end_time=0.004 \
+  --set run.output_interval=0.002 >c1.txt 2>&1 || { cat c1.txt; fail "the C1 run failed"; }
+pvbatch "$FSI_SOURCE_DIR/tests/system/paraview_check_run.py" c1/run.xmf --times 0,0.002,0.004 \
+  --block fluid=velocity,pressure,density,mass,flags \
+  --block solid=displacement,velocity,stress,density,mass --constant smoothing_length \
+  --sph fluid >c1_check.txt 2>&1 ||
+  { cat c1_check.txt; fail "ParaView does not open C1's run.xmf with what the SPH filters take"; }
+sph=$(grep -m1 -o "Shepard sum [0-9.]*" c1_check.txt)
+pass "ParaView (3 readers) reads both participants' series: 7 frames at the same times, 50 particles and 50 cells, all fields; run.xmf opens fluid and solid together (examples, and C1 with mass, density, smoothing_length; SPH interpolator: $sph)"

@@ -44,7 +44,9 @@
 #       material's for the total-Lagrangian models, while pseudo-spring SPH sends its
 #       continuity density, which this soft plate's strains move by -0.7 to +1.4 %
 #       (measured); a density in other units, or another field in its place, is off by
-#       far more.
+#       far more;
+#   (e) every dataset of both outputs has a unit and a description, and the flags name
+#       their values (output_files_check.py).
 # Incompressible fluids (ISPH): the fluid answers the plate's motion with the whole added
 # mass at once (about rho h^2 = 6 kg/m against the plate's rho_s t h = 2.4 kg/m here),
 # which makes a serial staggered scheme unstable whatever the window (Causin, Gerbeau &
@@ -133,7 +135,7 @@ check(chosen == {"fluid": fluid_solver, "solid": solid_solver},
 windows = int(re.search(r"\nwindows = (\d+)", run).group(1))
 t_end = float(re.search(r"\nsimulated_time = (\S+) s", run).group(1))
 check(abs(t_end - 0.01) < 1e-12, "the run stopped at t = %g s, not 0.01 s" % t_end)
-for row in csv.DictReader(open(out + "/probes.csv")):
+for row in csv.DictReader(l for l in open(out + "/probes.csv") if not l.startswith("#")):
     bad = [k for k, v in row.items() if not math.isfinite(float(v))]
     check(not bad, "probes.csv: %s not finite at t = %s s" % (bad, row["time"]))
 for part in ("fluid", "solid"):
@@ -207,8 +209,11 @@ for p in problems:
     print("FAIL: %s: %s" % (name, p))
 sys.exit(1 if problems else 0)
 PY
+    # (e) every dataset says what it holds, the flags are named (output_files_check.py)
+    output_readable "$out" fluid solid || failed="$failed $out"
   done
 done
 [ -z "$failed" ] || fail "combinations that failed:$failed"
 pass "every fluid x solid combination on C1 ($(echo $fluids) x $(echo $solids)): loads sent =" \
-  "loads received, no fluid inside the solid, finished, finite, density sent = received"
+  "loads received, no fluid inside the solid, finished, finite, density sent = received," \
+  "every dataset described"

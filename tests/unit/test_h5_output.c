@@ -32,6 +32,7 @@ static int32_t material(int f, int i) { return 7 * f + i; }
 static int32_t static_id(int i) { return 100 + i; }
 static double static_mass(int i) { return 1.0 + 0.5 * i; }
 static double static_x0(int i, int c) { return -1.0 * i - 0.5 * c; }
+static double smoothing_length(int f) { return 0.125 * (f + 1); }
 
 /* mkdir -p */
 static int make_dirs(const char *path)
@@ -94,8 +95,25 @@ static int write_frame(fsi_h5_writer *w, int f)
     rc |= fsi_h5_write_field_real(w, "velocity", v, D);
     rc |= fsi_h5_write_field_real(w, "stress", s, T);
     rc |= fsi_h5_write_field_int(w, "material", m, 1);
+    rc |= fsi_h5_write_frame_constant(w, "smoothing_length", smoothing_length(f));
     rc |= fsi_h5_end_frame(w);
     return rc;
+}
+
+/* Units, descriptions and flag names of some of the fields (check_info,
+ * check_flag_names). */
+static void describe(fsi_h5_writer *w)
+{
+    static const fsi_h5_field_info info[] = {
+        {"pressure", "Pa", "Pressure."},
+        {"velocity", "m/s", "Velocity."},
+        {"static/mass", "kg", "Mass."},
+    };
+    static const int32_t kinds[] = {1, 2, 4};
+    CHECK(fsi_h5_describe_fields(w, info, 3) == 0, "describe fields");
+    CHECK(fsi_h5_describe(w, "stress", "", "No unit.") == -1, "a description without a unit");
+    CHECK(fsi_h5_name_flags(w, "material", FSI_H5_FLAG_MASKS, 3, kinds, "one two four") == 0,
+          "name the material's bits");
 }
 
 /* Writes the whole data set into DIR; static data goes in between frames 0 and 1
@@ -107,6 +125,7 @@ static int write_all(const char *dir)
     if (!w)
         return -1;
     CHECK(fsi_h5_frames(w) == 0, "frames before any frame: %d", fsi_h5_frames(w));
+    describe(w);
     int rc = write_frame(w, 0);
     CHECK(rc == 0, "frame 0");
     rc = write_static(w);
@@ -237,6 +256,35 @@ static void check_root(hid_t file)
           "dimension %d", (int)dim);
 }
 
+/* The dataset's unit is 'unit' and it has a description. */
+static void check_info(hid_t loc, const char *name, const char *unit)
+{
+    char s[256] = "";
+    hid_t d = H5Dopen2(loc, name, H5P_DEFAULT);
+    CHECK(d >= 0, "open %s", name);
+    if (d < 0)
+        return;
+    CHECK(read_string_attr(d, "unit", s, sizeof s) == 0 && strcmp(s, unit) == 0,
+          "%s: unit '%s', expected '%s'", name, s, unit);
+    CHECK(read_string_attr(d, "description", s, sizeof s) == 0 && s[0] != '\0',
+          "%s: description '%s'", name, s);
+    H5Dclose(d);
+}
+
+static void check_flag_names(hid_t loc, const char *name, const char *kind,
+                             const char *meanings)
+{
+    char s[256] = "";
+    hid_t d = H5Dopen2(loc, name, H5P_DEFAULT);
+    CHECK(d >= 0, "open %s", name);
+    if (d < 0)
+        return;
+    CHECK(H5Aexists(d, kind) > 0, "%s: attribute %s", name, kind);
+    CHECK(read_string_attr(d, "flag_meanings", s, sizeof s) == 0 && strcmp(s, meanings) == 0,
+          "%s: flag_meanings '%s'", name, s);
+    H5Dclose(d);
+}
+
 static void check_static(hid_t file)
 {
     int32_t id[NSTATIC];
@@ -244,6 +292,7 @@ static void check_static(hid_t file)
     if (read_dataset(file, "static/id", H5T_NATIVE_INT32, H5T_INTEGER, NSTATIC, 1, id) == 0)
         for (int i = 0; i < NSTATIC; i++)
             CHECK(id[i] == static_id(i), "static id[%d] = %d", i, (int)id[i]);
+    check_info(file, "static/mass", "kg");
     if (read_dataset(file, "static/mass", H5T_NATIVE_DOUBLE, H5T_FLOAT, NSTATIC, 1, mass) == 0)
         for (int i = 0; i < NSTATIC; i++)
             CHECK(mass[i] == static_mass(i), "static mass[%d] = %g", i, mass[i]);
@@ -290,6 +339,13 @@ static void check_frame(hid_t file, int f)
           "frame %d step %lld", f, (long long)step);
     CHECK(read_attr(g, "frame", H5T_NATIVE_INT32, &frame) == 0 && frame == f,
           "frame %d frame attribute %d", f, (int)frame);
+    double h = -1;
+    CHECK(read_attr(g, "smoothing_length", H5T_NATIVE_DOUBLE, &h) == 0 &&
+              h == smoothing_length(f), "frame %d smoothing_length %g", f, h);
+    check_info(g, "position", "m");
+    check_info(g, "pressure", "Pa");
+    check_info(g, "velocity", "m/s");
+    check_flag_names(g, "material", "flag_masks", "one two four");
     int n = counts[f];
     check_real(g, "position", f, n, FSI_DIM, position);
     check_real(g, "pressure", f, n, 1, pressure3);
@@ -355,6 +411,7 @@ static void check_held_by_reader(const char *dir)
     CHECK(w != NULL, "create held");
     if (!w)
         return;
+    describe(w);
     CHECK(write_frame(w, 0) == 0, "held: frame 0");
     char path[4200];
     snprintf(path, sizeof path, "%s/held.h5", dir);
@@ -432,8 +489,12 @@ static void check_xmf(const char *dir)
     CHECK(count_of(x, "NumberType=\"Int\" Precision=\"4\"") == 2 * NFRAMES, "int items");
     CHECK(strstr(x, FSI_DIM == 2 ? "GeometryType=\"XY\"" : "GeometryType=\"XYZ\"") != NULL,
           "geometry type");
-    CHECK(count_of(x, "<Attribute ") == 4 * NFRAMES, "%d attributes",
+    CHECK(count_of(x, "<Attribute ") == 5 * NFRAMES, "%d attributes",
           count_of(x, "<Attribute "));
+    CHECK(count_of(x, "<Attribute Name=\"smoothing_length\" AttributeType=\"Scalar\" "
+                      "Center=\"Grid\">") == NFRAMES, "a grid attribute per frame");
+    CHECK(strstr(x, "<Grid Name=\"particles\" GridType=\"Collection\"") != NULL,
+          "the collection is named after the writer");
     CHECK(strstr(x, "/static/") == NULL, "static data is not in the sidecar");
     free(x);
 
