@@ -915,6 +915,7 @@ int main(void)
             fluid_scheme_pressure_gradient(s.scheme, &s.p, s.grad_p);
             fluid_probes_set(&s.probes, &s.p, s.grad_p, t0 + dt, part);
         }
+        fsi_set_progress(part, s.last_step, fluid_max_speed(&s.p));
         /* Coupled, the window is the fluid's step: the solid's motion it sees and the
          * loads it returns are then as fresh as the fluid's own state. */
         fsi_advance(part, fsi_coupled(part) && s.stable_dt > 0.0 ? s.stable_dt : DBL_MAX);

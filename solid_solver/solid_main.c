@@ -702,6 +702,11 @@ int main(void)
             break;
         }
         const int frame = fsi_output_frame(part);
+        double speed = 0.0;
+        if (s.p.n > 0)
+            fsi_fastest(s.p.v, s.p.n, &speed);
+        const long substeps = s.substeps - s.window_first_substep;
+        fsi_set_progress(part, substeps > 0 ? dt / (double)substeps : 0.0, speed);
         fsi_advance(part, DBL_MAX);   /* sub-cycling: the solid never limits the window */
         /* Output only of the state the run goes on from. */
         if (frame >= 0 && fsi_window_complete(part)) {
