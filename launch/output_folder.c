@@ -24,6 +24,7 @@ static const char *const run_files[] = {
     "traffic.lcmlog", "traffic.log",                  /* fsi run --log-traffic */
     "replay.log",                                     /* fsi replay */
     "c1_elastic_plate.png", "c1_elastic_plate.md",    /* fsi main (launch/fsi) */
+    "diagnostics.png",                                /* fsi plot, fsi main */
 };
 /* ... and of each participant P (every role a case may have): P.h5, P.xmf, P.log,
  * the temporaries of their atomic rewrites, P_diagnostics.csv, and the folder
