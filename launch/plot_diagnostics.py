@@ -91,7 +91,7 @@ def inside_panel(ax, data):
 
 def step_panel(ax, data):
     """Window, steps (log scale) and sub-steps per window."""
-    window_drawn = False
+    window_drawn = positive = False
     for who, d in data.items():
         t = d["time"][1:]   # window 0 has length zero
         if not window_drawn and d.get("dt [s]"):
@@ -99,7 +99,9 @@ def step_panel(ax, data):
             window_drawn = True
         if d.get("step [s]"):
             ax.plot(t, d["step [s]"][1:], label="%s step" % who)
-    ax.set_yscale("log")
+        positive |= any(v > 0 for v in d.get("dt [s]", []) + d.get("step [s]", []))
+    if positive:
+        ax.set_yscale("log")
     ax.set_ylabel("step [s]")
     ax.set_title("window and steps")
 
