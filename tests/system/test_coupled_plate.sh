@@ -155,8 +155,8 @@ pass "C4 at T / dx = 4: stable, sub-cycled, deflection near the elastic answer, 
 #     potential by the work through the interface, the fluid's loads over the solid's
 #     motion plus the interface impedance's (no prescribed loads, no damping here), to
 #     1e-4 of the largest work: velocity Verlet's energy error at the solid's sub-step
-#     (measured 2e-7 at T / dx = 4), far below the terms a wrong sum leaves out (the
-#     impedance's share, printed, about 7 % of the interface work; gravity's 15 %);
+#     (measured 7.7e-7 at T / dx = 4), far below the terms a wrong sum leaves out (the
+#     impedance's share, printed, about 6 % of the interface work; gravity's 15 %);
 #   - the impedance only takes energy out (its work never positive);
 #   - the work through the interface from both sides: the fluid's sum of its loads at
 #     the velocity the solid sent equals the solid's to 1e-9 (round-off of sums in
