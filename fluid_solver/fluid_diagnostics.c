@@ -2,7 +2,6 @@
 
 #include <math.h>
 #include <stdio.h>
-#include <string.h>
 
 #include "small_tensor.h"
 
@@ -55,18 +54,8 @@ enum { N_COLUMNS = sizeof columns / sizeof columns[0] };
 int fluid_diagnostics_open(fluid_diagnostics *d, const char *dir, const char *name,
                            off_t resume, char *msg, size_t msg_size)
 {
-    char file[256];
-    snprintf(file, sizeof file, "%s_diagnostics.csv", name);
-    const int rc = resume >= 0 ? fsi_probes_csv_resume(&d->csv, dir, file, N_COLUMNS, resume)
-                               : fsi_probes_csv_open(&d->csv, dir, file, N_COLUMNS, columns);
-    if (rc != 0) {
-        snprintf(msg, msg_size, "%s", d->csv.error);
-        if (d->csv.fd >= 0)
-            fsi_probes_csv_close(&d->csv);
-        return -1;
-    }
-    d->open = 1;
-    return 0;
+    return fsi_diagnostics_csv_open(&d->file, dir, name, N_COLUMNS, columns, resume, msg,
+                                    msg_size);
 }
 
 int fluid_diagnostics_write(fluid_diagnostics *d, double t, const fluid_particles *p,
@@ -81,21 +70,15 @@ int fluid_diagnostics_write(fluid_diagnostics *d, double t, const fluid_particle
         fluid_compression_energy(p, s), w->wall_work, w->interface_work, w->boundary_work,
         w->inside, fluid_max_speed(p),
     };
-    if (fsi_probes_csv_row(&d->csv, t, values) != 0) {
-        snprintf(msg, msg_size, "%s", d->csv.error);
-        return -1;
-    }
-    return 0;
+    return fsi_diagnostics_csv_row(&d->file, t, values, msg, msg_size);
 }
 
 off_t fluid_diagnostics_bytes(const fluid_diagnostics *d)
 {
-    return d->csv.committed;
+    return fsi_diagnostics_csv_bytes(&d->file);
 }
 
 void fluid_diagnostics_close(fluid_diagnostics *d)
 {
-    if (d->open)
-        fsi_probes_csv_close(&d->csv);
-    d->open = 0;
+    fsi_diagnostics_csv_close(&d->file);
 }

@@ -14,7 +14,7 @@
 
 #include "fluid_particles.h"
 #include "fluid_scheme.h"
-#include "probes_csv.h"
+#include "diagnostics_csv.h"
 
 /* sum 1/2 m v^2 over the fluid particles [J, per unit thickness in 2D]. */
 double fluid_kinetic_energy(const fluid_particles *p);
@@ -42,8 +42,7 @@ typedef struct {
 } fluid_window_summary;
 
 typedef struct {
-    fsi_probes_csv csv;
-    int open;                   /* the file is open (a zeroed struct is closed) */
+    fsi_diagnostics_csv file;
 } fluid_diagnostics;
 
 /* Creates DIR/NAME_diagnostics.csv with its header, or, with resume >= 0 (a restarted

@@ -72,20 +72,11 @@ int solid_diagnostics_open(solid_diagnostics *d, const solid_geometry *g, const 
         snprintf(msg, msg_size, "out of memory for the diagnostics of %d blocks", d->n_blocks);
         return -1;
     }
-    char file[256];
-    snprintf(file, sizeof file, "%s_diagnostics.csv", name);
-    const int rc = resume >= 0 ? fsi_probes_csv_resume(&d->csv, dir, file, n, resume)
-                               : fsi_probes_csv_open(&d->csv, dir, file, n, names);
+    const int rc = fsi_diagnostics_csv_open(&d->file, dir, name, n, names, resume, msg,
+                                            msg_size);
     free(names);
     free(text);
-    if (rc != 0) {
-        snprintf(msg, msg_size, "%s", d->csv.error);
-        if (d->csv.fd >= 0)
-            fsi_probes_csv_close(&d->csv);
-        return -1;
-    }
-    d->open = 1;
-    return 0;
+    return rc;
 }
 
 /* The fluid's force on each block and its moment about the origin into block_sums. */
@@ -132,25 +123,19 @@ int solid_diagnostics_write(solid_diagnostics *d, double t, const solid_particle
     memcpy(values, fixed, sizeof fixed);
     block_loads(d, p, w->fluid_force);
     memcpy(values + N_FIXED, d->block_sums, (size_t)d->n_blocks * PER_BLOCK * sizeof *values);
-    const int rc = fsi_probes_csv_row(&d->csv, t, values);
+    const int rc = fsi_diagnostics_csv_row(&d->file, t, values, msg, msg_size);
     free(values);
-    if (rc != 0) {
-        snprintf(msg, msg_size, "%s", d->csv.error);
-        return -1;
-    }
-    return 0;
+    return rc;
 }
 
 off_t solid_diagnostics_bytes(const solid_diagnostics *d)
 {
-    return d->csv.committed;
+    return fsi_diagnostics_csv_bytes(&d->file);
 }
 
 void solid_diagnostics_close(solid_diagnostics *d)
 {
-    if (d->open)
-        fsi_probes_csv_close(&d->csv);
-    d->open = 0;
+    fsi_diagnostics_csv_close(&d->file);
     free(d->block_sums);
     d->block_sums = NULL;
 }

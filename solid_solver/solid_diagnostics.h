@@ -14,7 +14,7 @@
 #include <sys/types.h>
 
 #include "geometry.h"
-#include "probes_csv.h"
+#include "diagnostics_csv.h"
 #include "solid_particles.h"
 
 /* One row: the state at the window's end and what the window took. */
@@ -34,8 +34,7 @@ typedef struct {
 } solid_window_summary;
 
 typedef struct {
-    fsi_probes_csv csv;
-    int open;                   /* the file is open (a zeroed struct is closed) */
+    fsi_diagnostics_csv file;
     int n_blocks;
     double *block_sums;         /* per block: force, moment */
 } solid_diagnostics;
