@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# C1 dam break against an elastic plate (docs/benchmarks.md C1, docs/validation.md C1):
+# fsi bench: C1 plate corner displacement against the published curves, per spacing
+# C1 dam break against an elastic plate (docs/validation.md C1):
 # cases/c1_elastic_plate.ini at each spacing, and the plate's upper-left corner against
 # the published numerical curves (data/elastic_obstacle_xdisp_num_*.csv).
 #

@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# C2 dam break through an elastic rubber gate (docs/benchmarks.md C2, docs/validation.md
+# fsi bench: C2 gate free end against Antoci et al. 2007's experiment, per T/dx
+# C2 dam break through an elastic rubber gate (docs/validation.md
 # C2): cases/c2_elastic_gate.ini at several resolutions T / dx (T = 5 mm the gate's
 # thickness), and the gate's free end against Antoci et al. 2007's experiment.
 #

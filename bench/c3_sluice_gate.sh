@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# C3 dam-break wave on an elastic sluice gate (docs/benchmarks.md C3, docs/validation.md
+# fsi bench: C3 sluice gate free-end displacement per T/dx (no reference data)
+# C3 dam-break wave on an elastic sluice gate (docs/validation.md
 # C3): cases/c3_sluice_gate.ini at one or more resolutions T / dx (T = 7 mm the gate's
 # thickness), and the displacement of the gate's free end (point A). No reference data.
 #

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# fsi bench: C4's plate alone under the water's weight: the solid against 2D elasticity
 # C4's plate alone (cases/c4_plate_under_water.ini's [solid] sections, no fluid) under
 # the water column's hydrostatic load, rho_w g H = 19620 N/m spread over its top row of
 # points, and its own weight, with mass damping so that it settles: how far the PD

@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# C4 water column on an aluminium plate (docs/benchmarks.md C4, docs/validation.md C4):
+# fsi bench: C4 settled mid-span deflection against plate theory and FE, per T/dx
+# C4 water column on an aluminium plate (docs/validation.md C4):
 # cases/c4_plate_under_water.ini at T / dx = N for each N, and the settled mid-span
 # deflection against plate theory (68.6 micrometres, 003 Eq. 53) and against the same
 # with the shear deflection of a Timoshenko beam.

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# fsi bench: C5's baffle alone under a ramped load: energy balance, with and without failure
 # C5's baffle alone (cases/c5_soil_baffle.ini's [solid] sections, no fluid) under a
 # uniform load on its loaded face ramped from 0 to 400 N/m over 0.1 s, at dx = 2 mm:
 # the energy balance of the solid (kinetic + stress work and control energy against

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# C5 dam break against a soil-like baffle that fails (docs/benchmarks.md C5,
-# docs/validation.md C5): cases/c5_soil_baffle.ini with bond failure and the same run
+# fsi bench: C5 baffle crack initiation time and place, with and without bond failure
+# C5 dam break against a soil-like baffle that fails (docs/validation.md
+# C5): cases/c5_soil_baffle.ini with bond failure and the same run
 # with --set solid.nosbpd.failure=false, side by side (one thread each), then the crack
 # initiation time and place and the damage snapshots (bench/fracture_scene.py).
 #

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# fsi bench: C6's obstacle loaded alone: does it break at the foot or the notch, per spacing
 # Where C6's obstacle (cases/c6_notched_obstacle.ini) starts to break when it is loaded
 # alone, as the spacing shrinks: the foot, where the bending moment is largest, or the
 # notch tip, where the crack concentrates the stress over about one horizon (3 dx). The

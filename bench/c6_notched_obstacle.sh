@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# C6 water impact on a notched brittle obstacle (docs/benchmarks.md C6,
-# docs/validation.md C6): cases/c6_notched_obstacle.ini with bond failure, the same
+# fsi bench: C6 crack start and path from the notch, with and without failure
+# C6 water impact on a notched brittle obstacle (docs/validation.md
+# C6): cases/c6_notched_obstacle.ini with bond failure, the same
 # run with --set solid.MODEL.failure=false (MODEL the run's solid model, so --set
 # solid.solver=pseudo_spring swaps the pair), and the run with failure but without the case's
 # no-failure zone at the foot (the case with its [solid.region foot_no_failure]

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# fsi bench: every fluid x solid solver on C1 or C2: accuracy against wall time
 # Every fluid x solid combination on one coupled scene (docs/validation.md, "Every fluid
 # with every solid"): the scene's own sweep (bench/c1_elastic_plate.sh or
 # bench/c2_elastic_gate.sh) once per combination, chosen only by --set fluid.solver and

@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# F1 dam break (docs/benchmarks.md F1, docs/validation.md F1): cases/f1_dam_break.ini, the
+# fsi bench: F1 surge front against Martin & Moyce 1952, per resolution
+# F1 dam break (docs/validation.md F1): cases/f1_dam_break.ini, the
 # column a = 0.05715 m wide, 2a high of Martin & Moyce 1952 (n^2 = 2, a = 2.25 in), at
 # several resolutions dx = a / N, and the surge front against the data.
 #

@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# F2 sloshing (docs/benchmarks.md F2, docs/validation.md F2): runs cases/f2_sloshing.ini
+# fsi bench: F2 free-surface elevation, and its error against Faltinsen et al. 2000's data
+# F2 sloshing (docs/validation.md F2): runs cases/f2_sloshing.ini
 # (000 §4.3: H = 0.5 m, T = 1.875 s, 6 s) and cases/f2_sloshing_faltinsen.ini (Faltinsen
 # et al. 2000: H = 0.6 m, T = 1.3 s, 10 s) side by side, one thread each, then
 # bench/f2_sloshing.py plots FS1 and compares the second with the measured elevation.

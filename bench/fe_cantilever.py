@@ -14,7 +14,7 @@ import numpy as np
 
 from fe_plane import EDGE_WEIGHTS, Mesh, elasticity_matrix
 
-# S1 (docs/benchmarks.md, cases/s1_cantilever.ini)
+# S1 (docs/validation.md, cases/s1_cantilever.ini)
 L, H, E, NU, F = 1.0, 0.2, 22e9, 0.3, 85000.0
 
 

@@ -17,7 +17,7 @@ import numpy as np
 
 from fe_plane import EDGE_WEIGHTS, Mesh, element_load, elasticity_matrix
 
-# C4 (docs/benchmarks.md, cases/c4_plate_under_water.ini)
+# C4 (docs/validation.md, cases/c4_plate_under_water.ini)
 C4 = dict(L=1.0, T=0.05, E=67.5e9, nu=0.34, rho_s=2700.0, rho_w=1000.0, H=2.0, g=9.81)
 
 

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# fsi bench: fluid scheme speed on F1: particle-steps/s and wall time, 1 and 2 threads
 # Speed of the fluid schemes (docs/performance.md): the F1 dam break
 # (cases/f1_dam_break.ini) at dx = a / N for each N of --n (default 57 and 114: the
 # nearest spacings to 1 mm and 0.5 mm that divide the column a = 0.05715 m; 100 is the

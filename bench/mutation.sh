@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# fsi bench: mutation score: which of bench/mutations.list's planted bugs the tests catch
 # Mutation bench: does the test suite catch small plausible bugs? Every mutation of
 # bench/mutations.list is applied alone to a clean copy of the committed tree (git
 # archive HEAD, in a folder outside the repository), built (Release), and the tests
@@ -36,7 +37,7 @@ while [ $# -gt 0 ]; do
     -j) jobs="$2"; shift 2 ;;
     --keep) keep=1; shift ;;
     --skip-clean) skip_clean=1; shift ;;
-    -h|--help) sed -n '2,26p' "$0"; exit 0 ;;
+    -h|--help) sed -n '2,27p' "$0"; exit 0 ;;
     *) echo "mutation.sh: unknown option '$1'" >&2; exit 2 ;;
   esac
 done

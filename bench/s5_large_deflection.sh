@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# fsi bench: S5 large-deflection cantilever tip against the elastica, per N_y
 # S5: 003 §3.1's cantilever under the large tip load (alpha = P L^2 / (E I) = 1),
 # quasi-static, against the elastica (bench/elastica.py): TLSPH with Saint Venant-Kirchhoff
 # at N_y = T / dx = 5, 10, 20, the other total-form laws (linear_elastic, i.e. 003's

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
+# fsi bench: S1-S3 solid accuracy per resolution and interaction updates per second
 # Validation and performance of a solid model (NOSB-PD by default): S1, S2, S3 of
-# docs/benchmarks.md at several resolutions, and interaction updates per second at 1
+# docs/validation.md at several resolutions, and interaction updates per second at 1
 # and 2 threads on S2 at T/dx = 40. Writes OUT/solid_validation.md (the tables of
 # docs/validation.md, docs/pseudo_spring.md) and keeps every run's output folder under OUT.
 #

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# fsi bench: where each fluid x solid pair is stable and accurate, explicit and implicit
 # Stability maps (docs/stability.md): where each fluid x solid combination, with explicit
 # (serial-staggered) and implicit coupling, stays stable and accurate on a scene
 # sensitive to added mass, and what implicit coupling costs where explicit fails.

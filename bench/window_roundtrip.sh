@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# fsi bench: wall time of one coupling window's message round trip on loopback
 # Round-trip cost of one coupling window on loopback: grant -> solid state -> fluid
 # loads -> both done, measured by the coupler for every window of the example
 # participants (whose own work is negligible), reported as the median over windows

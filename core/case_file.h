@@ -211,4 +211,12 @@ void fsi_case_free(fsi_case *c);
  * (or "required"), allowed range or choices, meaning. */
 void fsi_case_schema_markdown(const fsi_case_schema *schema, FILE *out);
 
+/* One part of that reference (`fsi keys NAME`): a fixed section ("run"), a solver
+ * with its keys and object sections ("tlsph"), every solver of a role ("fluid"), or
+ * "external". Returns 0, or -1 (nothing written) when NAME is none of them. */
+int fsi_case_schema_markdown_part(const fsi_case_schema *schema, const char *name, FILE *out);
+
+/* The names fsi_case_schema_markdown_part takes, separated by blanks. */
+void fsi_case_schema_part_names(const fsi_case_schema *schema, FILE *out);
+
 #endif

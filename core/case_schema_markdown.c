@@ -7,6 +7,7 @@
 
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 static const char *type_name(fsi_key_type t)
 {
@@ -113,6 +114,21 @@ static void md_paragraph(const char *text, FILE *out)
         fprintf(out, "%s\n\n", text);
 }
 
+static void md_section(const fsi_key_table *t, FILE *out)
+{
+    fprintf(out, "\n## [%s]\n\n", t->name);
+    md_paragraph(t->description, out);
+    md_table(t, out);
+}
+
+static void md_external(FILE *out)
+{
+    fputs("\n### solver = external (any participant)\n\n"
+          "Runs the program given by `executable` (required, non-empty) as the participant; "
+          "all other keys of the section and its object sections are passed to it as they "
+          "are.\n", out);
+}
+
 static void md_roles_heading(const fsi_case_schema *schema, FILE *out)
 {
     fputs("\n## Participant sections", out);
@@ -207,12 +223,8 @@ void fsi_case_schema_markdown(const fsi_case_schema *schema, FILE *out)
             "value shortens it most against an ordinary case (water, c0 below water's 1480 "
             "m/s, millimetre spacing, the default factors, a steel-stiff solid).\n",
             FSI_MIN_STEP, FSI_MAX_STEPS);
-    for (int i = 0; i < schema->n_sections; i++) {
-        const fsi_key_table *t = &schema->sections[i];
-        fprintf(out, "\n## [%s]\n\n", t->name);
-        md_paragraph(t->description, out);
-        md_table(t, out);
-    }
+    for (int i = 0; i < schema->n_sections; i++)
+        md_section(&schema->sections[i], out);
     if (schema->n_roles == 0)
         return;
     md_roles_heading(schema, out);
@@ -247,8 +259,54 @@ void fsi_case_schema_markdown(const fsi_case_schema *schema, FILE *out)
     }
     for (int i = 0; i < schema->n_solvers; i++)
         md_solver(&schema->solvers[i], out);
-    fputs("\n### solver = external (any participant)\n\n"
-          "Runs the program given by `executable` (required, non-empty) as the participant; "
-          "all other keys of the section and its object sections are passed to it as they "
-          "are.\n", out);
+    md_external(out);
+}
+
+/* The parts `fsi keys NAME` can print, in the order of the whole reference. */
+static int is_role(const fsi_case_schema *schema, const char *name)
+{
+    for (int i = 0; i < schema->n_roles; i++)
+        if (strcmp(schema->roles[i], name) == 0)
+            return 1;
+    return 0;
+}
+
+int fsi_case_schema_markdown_part(const fsi_case_schema *schema, const char *name, FILE *out)
+{
+    for (int i = 0; i < schema->n_sections; i++)
+        if (strcmp(schema->sections[i].name, name) == 0) {
+            md_section(&schema->sections[i], out);
+            return 0;
+        }
+    int found = 0;
+    if (is_role(schema, name) && schema->participant) {
+        fprintf(out, "\n## [%s]\n\n", name);
+        md_paragraph(schema->participant->description, out);
+        md_table(schema->participant, out);
+        found = 1;
+    }
+    for (int i = 0; i < schema->n_solvers; i++) {
+        const fsi_solver_spec *sv = &schema->solvers[i];
+        if (strcmp(sv->name, name) == 0 || strcmp(sv->role, name) == 0) {
+            md_solver(sv, out);
+            found = 1;
+        }
+    }
+    if (strcmp(name, "external") == 0 || is_role(schema, name)) {
+        md_external(out);
+        found = 1;
+    }
+    return found ? 0 : -1;
+}
+
+void fsi_case_schema_part_names(const fsi_case_schema *schema, FILE *out)
+{
+    const char *sep = "";
+    for (int i = 0; i < schema->n_sections; i++, sep = " ")
+        fprintf(out, "%s%s", sep, schema->sections[i].name);
+    for (int i = 0; i < schema->n_roles; i++, sep = " ")
+        fprintf(out, "%s%s", sep, schema->roles[i]);
+    for (int i = 0; i < schema->n_solvers; i++, sep = " ")
+        fprintf(out, "%s%s", sep, schema->solvers[i].name);
+    fprintf(out, "%s%s", sep, "external");
 }

@@ -1,5 +1,5 @@
 /* The cubic B-spline kernel (Monaghan & Lattanzio 1985; Liu & Liu 2003), the kernel of
- * seed 003's ISPH and TLSPH (003 §2.1, h = 1.2 dx):
+ * Salehizadeh & Shafiei 2022's ISPH and TLSPH (003 §2.1, h = 1.2 dx):
  *
  *     W(q) = alpha_d (1 - 3/2 q^2 + 3/4 q^3)   for 0 <= q < 1,
  *            alpha_d (2 - q)^3 / 4             for 1 <= q < 2,   0 beyond,  q = r / h,

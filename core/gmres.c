@@ -117,7 +117,7 @@ fsi_krylov_result fsi_gmres(const fsi_csr *a, const fsi_precond *pc, const doubl
 {
     fsi_krylov_result res;
     const int32_t n = a->n_rows;
-    const double norm_b = krylov_start(b, x, n, &res);
+    const double norm_b = krylov_start(a, b, x, n, &res);   /* the residual's scale */
     if (norm_b == 0.0)
         return res;
     arnoldi ar = {restart > 0 ? restart : 1, n, NULL, NULL, NULL, NULL, NULL, NULL, NULL};

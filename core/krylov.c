@@ -125,7 +125,7 @@ fsi_krylov_result fsi_bicgstab(const fsi_csr *a, const fsi_precond *m, const dou
 {
     fsi_krylov_result res;
     const int32_t n = a->n_rows;
-    const double norm_b = krylov_start(b, x, n, &res);
+    const double norm_b = krylov_start(a, b, x, n, &res);   /* the residual's scale */
     if (norm_b == 0.0)
         return res;
     double *w = malloc((size_t)N_VECTORS * ((size_t)n + 1) * sizeof *w);

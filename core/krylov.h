@@ -11,15 +11,19 @@
  *   - x on entry is the first guess (warm start: the last step's pressure); on
  *     return the solution, or, when not converged, the iterate with the smallest
  *     residual met (never worse than the guess, never NaN).
- *   - converged when ||b - A x|| / ||b|| <= tol (2-norms), checked on the TRUE
- *     residual: the recursively updated one drifts from it by round-off, so when the
- *     recursion says "converged" the residual is recomputed and the iteration goes on
- *     from it if it is not. b = 0 gives x = 0, converged, 0 iterations.
+ *   - converged when ||b - A x|| / s <= tol (2-norms), s = max(||b||, ||A x0||),
+ *     checked on the TRUE residual: the recursively updated one drifts from it by
+ *     round-off, so when the recursion says "converged" the residual is recomputed
+ *     and the iteration goes on from it if it is not. s is ||b|| but when the guess's
+ *     image is larger: a right-hand side that cancels to round-off (ISPH's water
+ *     falling with a heavy plate at t = 0, every source zero) makes tol ||b||
+ *     unattainable, and the pressure field the guess holds is then the scale the
+ *     answer's error is measured against. b = 0 gives x = 0, converged, 0 iterations.
  *   - breakdown: rho = (r0, r) or (r0, A p) or omega vanishing (below the dot
  *     product's own round-off, eps |u| |v|). The solver restarts once from the
  *     current x with a new shadow residual r0 = b - A x; a second breakdown ends it
  *     with converged = 0 and the reason. So does divergence: once eps ||r|| exceeds
- *     tol ||b|| the round-off of the updates alone keeps the residual above the goal
+ *     tol s the round-off of the updates alone keeps the residual above the goal
  *     (reason "diverged"). A singular system with no solution (an inconsistent
  *     right-hand side, e.g. a PPE with no Dirichlet particle) ends so or at max_iter.
  *     A singular but consistent one may converge to one of its solutions: the
@@ -40,7 +44,7 @@ typedef struct {
 
 typedef struct {
     int iterations;        /* iterations done, over all restarts */
-    double rel_residual;   /* ||b - A x|| / ||b|| of the returned x (recomputed) */
+    double rel_residual;   /* ||b - A x|| / s of the returned x (recomputed) */
     int converged;         /* 1 when rel_residual <= tol */
     int restarts;          /* BiCGSTAB's breakdown restarts (0 or 1) */
     const char *reason;    /* why it stopped: "converged", "max_iter", a breakdown or

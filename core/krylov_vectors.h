@@ -43,16 +43,27 @@ static inline double krylov_residual(const fsi_csr *a, const double *b, const do
 
 /* Starts a solve: *res says converged after 0 iterations, and returns ||b||. When b
  * is 0 the solution is x = 0, set here; the caller returns *res at once. */
-static inline double krylov_start(const double *b, double *x, int32_t n,
+static inline double krylov_start(const fsi_csr *a, const double *b, double *x, int32_t n,
                                   fsi_krylov_result *res)
 {
     const fsi_krylov_result start = {0, 0.0, 1, 0, "converged"};
     *res = start;
     const double norm_b = krylov_norm(b, n);
-    if (norm_b == 0.0)
+    if (norm_b == 0.0) {
         for (int32_t i = 0; i < n; i++)
             x[i] = 0.0;
-    return norm_b;
+        return 0.0;
+    }
+    /* ||A x0||, row by row (no work vector yet) */
+    double sum = 0.0;
+    for (int32_t i = 0; i < n; i++) {
+        double row = 0.0;
+        for (int64_t e = a->row_start[i]; e < a->row_start[i + 1]; e++)
+            row += a->val[e] * x[a->col[e]];
+        sum += row * row;
+    }
+    const double norm_ax = sqrt(sum);
+    return norm_ax > norm_b ? norm_ax : norm_b;
 }
 
 #endif

@@ -583,8 +583,8 @@ static int library_state(const fsi_participant *p, fsi_state *st)
                            (size_t)p->n_probes * sizeof(double));
     if (p->implicit_solid)
         rc |= fsi_accel_save(p->implicit_solid->accel, st, "library.accel.") |
-              fsi_state_put(st, "library.history_dt", &p->implicit_solid->history_dt,
-                            sizeof(double));
+              fsi_state_put(st, "library.history_dt", p->implicit_solid->history_dt,
+                            sizeof p->implicit_solid->history_dt);
     return rc ? -1 : 0;
 }
 
@@ -662,8 +662,8 @@ static int apply_restart(fsi_participant *p)
                       (size_t)p->n_probes * sizeof(double)) == 0 &&
         (!p->implicit_solid ||
          (fsi_accel_restore(p->implicit_solid->accel, own, "library.accel.") == 0 &&
-          fsi_state_get(own, "library.history_dt", &p->implicit_solid->history_dt,
-                        sizeof(double)) == 0))) {
+          fsi_state_get(own, "library.history_dt", p->implicit_solid->history_dt,
+                        sizeof p->implicit_solid->history_dt) == 0))) {
         /* As if window K - 1 had just ended: the first grant expected, and asked for
          * again when it is lost, is K's (a participant that starts at -1 would ask for
          * window 0). */

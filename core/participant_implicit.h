@@ -41,7 +41,8 @@ typedef struct {
     int n, capacity;
     int iteration;          /* of the motion in u_in */
     double dt;              /* the window's length */
-    double history_dt;      /* the window length the acceleration's history is of */
+    double history_dt[2];   /* the lengths of the window the acceleration's history is of
+                             * and of the window before it */
     int32_t *id;            /* the window's particles, in the order sent */
     double *x_start;        /* their positions at t_k */
     double *u_prev;         /* the last window's mean velocities (sent as velocity) */

@@ -8,6 +8,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "cli_args.h"
 #include "dim.h"
 #include "log.h"
 #include "messages.h"
@@ -198,16 +199,33 @@ static void print_lines(inspection *in)
            in->heartbeats, in->undecodable, in->other_channels);
 }
 
+static void usage(FILE *out)
+{
+    fprintf(out, "usage: fsi inspect LOG\n"
+                 "  LOG   a traffic.lcmlog from fsi run --log-traffic; prints one line per\n"
+                 "        window, iteration and message kind, heartbeats summed at the end\n");
+}
+
 int main(int argc, char **argv)
 {
     fsi_log_set_name("fsi inspect");
-    if (argc != 2 || argv[1][0] == '-') {
-        fprintf(stderr, "usage: fsi inspect LOG   (a traffic.lcmlog from fsi run --log-traffic)\n");
+    const char *path = NULL;
+    fsi_args a = fsi_args_begin(argc, argv, "fsi inspect", usage);
+    while (fsi_args_next(&a)) {
+        if (fsi_arg_positional(&a) && !path)
+            path = a.arg;
+        else
+            fsi_arg_unknown(&a);
+    }
+    if (a.error)
+        return FSI_EXIT_BAD_INPUT;
+    if (!path) {
+        usage(stderr);
         return FSI_EXIT_BAD_INPUT;
     }
-    lcm_eventlog_t *log = lcm_eventlog_create(argv[1], "r");
+    lcm_eventlog_t *log = lcm_eventlog_create(path, "r");
     if (!log) {
-        fsi_error("cannot open traffic log '%s'", argv[1]);
+        fsi_error("cannot open traffic log '%s'", path);
         return FSI_EXIT_BAD_INPUT;
     }
     inspection in = {0};

@@ -107,8 +107,9 @@ def step_panel(ax, data):
 
 
 def main():
-    if len(sys.argv) != 2 or sys.argv[1] in ("-h", "--help"):
-        sys.exit(USAGE)
+    if len(sys.argv) != 2:
+        print(USAGE, file=sys.stderr)
+        sys.exit(2)
     out = sys.argv[1]
     paths = sorted(glob.glob(os.path.join(out, "*_diagnostics.csv")))
     data = {}

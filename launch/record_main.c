@@ -14,6 +14,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "cli_args.h"
 #include "log.h"
 #include "timers.h"
 
@@ -43,20 +44,36 @@ static void record(const lcm_recv_buf_t *rbuf, const char *channel, void *user)
         write_failures++;
 }
 
+static void usage(FILE *out)
+{
+    fprintf(out, "usage: fsi-record LCM_URL FILE   (started by fsi run --log-traffic)\n");
+}
+
 int main(int argc, char **argv)
 {
     fsi_log_set_name("fsi record");
-    if (argc != 3) {
-        fprintf(stderr, "usage: fsi-record LCM_URL FILE\n");
+    const char *positional[2] = {NULL, NULL};
+    int n = 0;
+    fsi_args a = fsi_args_begin(argc, argv, "fsi-record", usage);
+    while (fsi_args_next(&a)) {
+        if (fsi_arg_positional(&a) && n < 2)
+            positional[n++] = a.arg;
+        else
+            fsi_arg_unknown(&a);
+    }
+    if (a.error || n != 2) {
+        if (!a.error)
+            usage(stderr);
         return FSI_EXIT_BAD_INPUT;
     }
+    const char *url = positional[0], *path = positional[1];
     struct sigaction sa = {0};
     sa.sa_handler = on_signal;
     sigaction(SIGINT, &sa, NULL);
     sigaction(SIGTERM, &sa, NULL);
-    lcm_t *lcm = lcm_create(argv[1]);
+    lcm_t *lcm = lcm_create(url);
     if (!lcm) {
-        fsi_error("cannot open LCM URL '%s'", argv[1]);
+        fsi_error("cannot open LCM URL '%s'", url);
         return FSI_EXIT_RUN_FAILURE;
     }
     /* The file appears only once we listen: `fsi run` waits for it before it starts
@@ -64,8 +81,8 @@ int main(int argc, char **argv)
     static lcm_eventlog_t *log;   /* messages are handled only once it is open */
     lcm_subscription_t *all = lcm_subscribe(lcm, ".*", record, &log);
     if (!all || lcm_subscription_set_queue_capacity(all, 0) != 0 ||
-        !(log = lcm_eventlog_create(argv[2], "w"))) {
-        fsi_error("cannot record '%s' to %s", argv[1], argv[2]);
+        !(log = lcm_eventlog_create(path, "w"))) {
+        fsi_error("cannot record '%s' to %s", url, path);
         lcm_destroy(lcm);
         return FSI_EXIT_RUN_FAILURE;
     }
@@ -84,6 +101,6 @@ int main(int argc, char **argv)
     lcm_eventlog_destroy(log);
     lcm_destroy(lcm);
     if (write_failures)
-        fsi_error("%ld messages could not be written to %s", write_failures, argv[2]);
+        fsi_error("%ld messages could not be written to %s", write_failures, path);
     return rc < 0 || write_failures ? FSI_EXIT_RUN_FAILURE : FSI_EXIT_OK;
 }

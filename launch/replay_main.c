@@ -49,31 +49,26 @@ static void usage(FILE *out)
             "  --out DIR         output folder (default: RUN_DIR/replay_P)\n"
             "  --set s.k=v       change a key of the recorded case (the replay then differs)\n"
             "  --threads N       OpenMP threads (default: the recorded case's)\n"
-            "  --force           replace the results of an earlier replay in DIR\n");
+            "  --force           replace the results of an earlier replay in DIR\n"
+            "  An option's value may also follow '=': --out=DIR.\n");
 }
 
 static int parse_options(int argc, char **argv, replay_options *o)
 {
-    for (int i = 1; i < argc; i++) {
-        const char *a = argv[i];
-        int shared = fsi_parse_launch_option(argc, argv, &i, &o->common, "fsi replay");
-        if (shared < 0)
-            return -1;
-        if (shared)
+    fsi_args a = fsi_args_begin(argc, argv, "fsi replay", usage);
+    while (fsi_args_next(&a)) {
+        const char *v;
+        if (fsi_parse_launch_option(&a, &o->common))
             continue;
-        if (strcmp(a, "--participant") == 0 && i + 1 < argc)
-            o->participant = argv[++i];
-        else if (strcmp(a, "-h") == 0 || strcmp(a, "--help") == 0) {
-            usage(stdout);
-            exit(FSI_EXIT_OK);
-        } else if (a[0] != '-' && !o->run_dir)
-            o->run_dir = a;
-        else {
-            fprintf(stderr, "fsi replay: unknown or incomplete option '%s'\n", a);
-            usage(stderr);
-            return -1;
-        }
+        if (fsi_arg_value(&a, "--participant", &v))
+            o->participant = v;
+        else if (fsi_arg_positional(&a) && !o->run_dir)
+            o->run_dir = a.arg;
+        else
+            fsi_arg_unknown(&a);
     }
+    if (a.error)
+        return -1;
     if (!o->run_dir || !o->participant) {
         usage(stderr);
         return -1;

@@ -61,53 +61,52 @@ static void usage(FILE *out)
             "                    a coupled checkpoint every T of simulated time (at the\n"
             "                    first frame time from each multiple of T on)\n"
             "  --restart OUT     go on with the run in OUT from its newest complete\n"
-            "                    checkpoint (docs/checkpoints.md)\n");
+            "                    checkpoint (docs/checkpoints.md)\n"
+            "  An option's value may also follow '=': --out=DIR.\n");
+}
+
+/* --checkpoint-interval T becomes --set run.checkpoint_interval=T. */
+static void set_checkpoint_interval(fsi_args *a, const char *v, run_options *o)
+{
+    if (!v)
+        return;   /* the message is printed */
+    char *end;
+    const double t = strtod(v, &end);
+    if (*end || !(t > 0.0))
+        fsi_arg_bad_value(a, "--checkpoint-interval", v, "needs a time > 0 in seconds");
+    else if (o->common.n_sets >= FSI_MAX_SETS)
+        fsi_arg_bad_value(a, "--checkpoint-interval", v, "is one --set too many");
+    else {
+        snprintf(o->checkpoint_set, sizeof o->checkpoint_set, "run.checkpoint_interval=%.17g",
+                 t);
+        o->common.sets[o->common.n_sets++] = o->checkpoint_set;
+    }
 }
 
 static int parse_options(int argc, char **argv, run_options *o)
 {
-    for (int i = 1; i < argc; i++) {
-        const char *a = argv[i];
-        int has_value = i + 1 < argc;
-        int shared = fsi_parse_launch_option(argc, argv, &i, &o->common, "fsi run");
-        if (shared < 0)
-            return -1;
-        if (shared)
+    fsi_args a = fsi_args_begin(argc, argv, "fsi run", usage);
+    while (fsi_args_next(&a)) {
+        const char *v;
+        if (fsi_parse_launch_option(&a, &o->common))
             continue;
-        if (strcmp(a, "--log-traffic") == 0)
+        if (fsi_arg_flag(&a, "--log-traffic"))
             o->log_traffic = 1;
-        else if (strcmp(a, "--lcm-url") == 0 && has_value)
-            o->lcm_url = argv[++i];
-        else if (strcmp(a, "--check") == 0)
+        else if (fsi_arg_value(&a, "--lcm-url", &v))
+            o->lcm_url = v;
+        else if (fsi_arg_flag(&a, "--check"))
             o->check_only = 1;
-        else if (strcmp(a, "--restart") == 0 && has_value)
-            o->restart = argv[++i];
-        else if (strcmp(a, "--checkpoint-interval") == 0 && has_value) {
-            char *end;
-            const double t = strtod(argv[++i], &end);
-            if (*end || !(t > 0.0)) {
-                fprintf(stderr, "fsi run: --checkpoint-interval needs a time > 0 in seconds, "
-                                "not '%s'\n", argv[i]);
-                return -1;
-            }
-            if (o->common.n_sets >= FSI_MAX_SETS) {
-                fprintf(stderr, "fsi run: too many --set options\n");
-                return -1;
-            }
-            snprintf(o->checkpoint_set, sizeof o->checkpoint_set,
-                     "run.checkpoint_interval=%.17g", t);
-            o->common.sets[o->common.n_sets++] = o->checkpoint_set;
-        } else if (strcmp(a, "-h") == 0 || strcmp(a, "--help") == 0) {
-            usage(stdout);
-            exit(FSI_EXIT_OK);
-        } else if (a[0] != '-' && !o->case_path)
-            o->case_path = a;
-        else {
-            fprintf(stderr, "fsi run: unknown or incomplete option '%s'\n", a);
-            usage(stderr);
-            return -1;
-        }
+        else if (fsi_arg_value(&a, "--restart", &v))
+            o->restart = v;
+        else if (fsi_arg_value(&a, "--checkpoint-interval", &v))
+            set_checkpoint_interval(&a, v, o);
+        else if (fsi_arg_positional(&a) && !o->case_path)
+            o->case_path = a.arg;
+        else
+            fsi_arg_unknown(&a);
     }
+    if (a.error)
+        return -1;
     if (o->restart) {
         /* The run goes on with its own resolved case: nothing about it may change. */
         if (o->case_path || o->common.n_sets > 0 || o->common.out_dir || o->common.force ||

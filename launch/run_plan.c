@@ -10,25 +10,25 @@
 #include "run_keys.h"
 #include "solver_registry.h"
 
-int fsi_parse_launch_option(int argc, char **argv, int *i, launch_options *o,
-                            const char *command)
+int fsi_parse_launch_option(fsi_args *a, launch_options *o)
 {
-    const char *a = argv[*i];
-    int has_value = *i + 1 < argc;
-    if (strcmp(a, "--out") == 0 && has_value) {
-        o->out_dir = argv[++*i];
-    } else if (strcmp(a, "--set") == 0 && has_value && o->n_sets < FSI_MAX_SETS) {
-        o->sets[o->n_sets++] = argv[++*i];
-    } else if (strcmp(a, "--threads") == 0 && has_value) {
-        char *end;
-        long n = strtol(argv[++*i], &end, 10);
-        if (*end || n < 1 || n > 1024) {
-            fprintf(stderr, "%s: --threads needs a whole number >= 1, not '%s'\n", command,
-                    argv[*i]);
-            return -1;
-        }
+    const char *v;
+    if (fsi_arg_value(a, "--out", &v)) {
+        o->out_dir = v;
+    } else if (fsi_arg_value(a, "--set", &v)) {
+        if (v && o->n_sets >= FSI_MAX_SETS) {
+            char what[64];
+            snprintf(what, sizeof what, "is one too many (at most %d)", FSI_MAX_SETS);
+            fsi_arg_bad_value(a, "--set", v, what);
+        } else if (v)
+            o->sets[o->n_sets++] = v;
+    } else if (fsi_arg_value(a, "--threads", &v)) {
+        char *end = NULL;
+        long n = v ? strtol(v, &end, 10) : 0;
+        if (v && (*end || n < 1 || n > 1024))
+            fsi_arg_bad_value(a, "--threads", v, "needs a whole number from 1 to 1024");
         o->threads = (int)n;
-    } else if (strcmp(a, "--force") == 0) {
+    } else if (fsi_arg_flag(a, "--force")) {
         o->force = 1;
     } else {
         return 0;

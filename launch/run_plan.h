@@ -8,6 +8,7 @@
 #include <stddef.h>
 
 #include "case_file.h"
+#include "cli_args.h"
 
 #define FSI_MAX_SETS 256
 
@@ -20,11 +21,10 @@ typedef struct {
     int force;
 } launch_options;
 
-/* Takes argv[*i] when it is one of the shared options (--out, --set, --threads,
- * --force), moving *i past its value. Returns 1 when taken, 0 when it is not one
- * of them, -1 on a bad value (with a message under 'command'). */
-int fsi_parse_launch_option(int argc, char **argv, int *i, launch_options *o,
-                            const char *command);
+/* Takes the current argument when it is one of the shared options (--out, --set,
+ * --threads, --force; cli_args.h), with its value. Returns 1 when taken (a bad value
+ * sets a->error with a message), 0 when it is not one of them. */
+int fsi_parse_launch_option(fsi_args *a, launch_options *o);
 
 typedef struct {
     const char *role;

@@ -93,35 +93,35 @@ static const fsi_solver_spec solvers[] = {
      .example = 1, .key_tables = dashpot_tables, .n_key_tables = N_TABLES(dashpot_tables)},
     {.name = "nosbpd", .role = "solid", .executable = "fsi-solid-nosbpd",
      .description =
-         "Non-ordinary state-based peridynamics (correspondence model, seed 000 section 2.2) "
-         "with zero-energy control, bond failure and Drucker-Prager plasticity "
-         "(solid_solver/nosbpd, docs/nosbpd.md).",
+         "Non-ordinary state-based peridynamics (correspondence model, Wang et al. 2024 "
+         "(000) section 2.2) with zero-energy control, bond failure and Drucker-Prager "
+         "plasticity (solid_solver/nosbpd, docs/nosbpd.md).",
      .key_tables = solid_model_tables, .n_key_tables = N_TABLES(solid_model_tables),
      .own_keys = &fsi_nosbpd_keys, .objects = fsi_solid_object_kinds,
      .n_objects = FSI_SOLID_N_OBJECT_KINDS, .check = nosbpd_check},
     {.name = "pseudo_spring", .role = "solid", .executable = "fsi-solid-pseudo-spring",
      .description =
-         "Pseudo-spring SPH (seed 004 section 3, Chakraborty & Shaw 2013): updated-Lagrangian "
-         "SPH over the immediate lattice neighbours with the corrected kernel gradient, "
-         "Jaumann stress rate, artificial viscosity and stress, and link failure "
-         "(solid_solver/pseudo_spring, docs/pseudo_spring.md).",
+         "Pseudo-spring SPH (Islam 2023 (004) section 3, Chakraborty & Shaw 2013): "
+         "updated-Lagrangian SPH over the immediate lattice neighbours with the corrected "
+         "kernel gradient, Jaumann stress rate, artificial viscosity and stress, and link "
+         "failure (solid_solver/pseudo_spring, docs/pseudo_spring.md).",
      .key_tables = solid_model_tables, .n_key_tables = N_TABLES(solid_model_tables),
      .own_keys = &fsi_pseudo_spring_keys, .objects = fsi_solid_object_kinds,
      .n_objects = FSI_SOLID_N_OBJECT_KINDS, .check = pseudo_spring_check},
     {.name = "tlsph", .role = "solid", .executable = "fsi-solid-tlsph",
      .description =
-         "Total-Lagrangian SPH (seed 003 section 2.2, Lin et al. 2015): reference-configuration "
-         "kernel gradients with the shape-matrix correction, first Piola-Kirchhoff stress, "
-         "linear elastic or hyperelastic materials, optional hourglass control, velocity "
-         "Verlet or RK4 (solid_solver/tlsph, docs/tlsph.md).",
+         "Total-Lagrangian SPH (Salehizadeh & Shafiei 2022 (003) section 2.2, Lin et al. "
+         "2015): reference-configuration kernel gradients with the shape-matrix correction, "
+         "first Piola-Kirchhoff stress, linear elastic or hyperelastic materials, optional "
+         "hourglass control, velocity Verlet or RK4 (solid_solver/tlsph, docs/tlsph.md).",
      .key_tables = solid_model_tables, .n_key_tables = N_TABLES(solid_model_tables),
      .own_keys = &fsi_tlsph_keys, .objects = fsi_solid_object_kinds,
      .n_objects = FSI_SOLID_N_OBJECT_KINDS, .check = tlsph_check},
     {.name = "ulph", .role = "fluid", .executable = "fsi-fluid-ulph",
      .description =
          "Updated Lagrangian Particle Hydrodynamics, a weakly compressible fluid with "
-         "non-local operators, fixed ghost walls and predictor-corrector stepping (seed 000 "
-         "section 2.1, fluid_solver/ulph, docs/ulph.md).",
+         "non-local operators, fixed ghost walls and predictor-corrector stepping (Wang et "
+         "al. 2024 (000) section 2.1, fluid_solver/ulph, docs/ulph.md).",
      .key_tables = ulph_tables, .n_key_tables = N_TABLES(ulph_tables),
      .own_keys = &fsi_ulph_keys, .support = ulph_support, .objects = fsi_fluid_object_kinds,
      .n_objects = FSI_FLUID_N_OBJECT_KINDS, .check = fluid_geometry_check},
@@ -129,7 +129,7 @@ static const fsi_solver_spec solvers[] = {
      .description =
          "Weakly compressible SPH with delta-SPH density diffusion, the Wendland C2 kernel, "
          "Adami dummy walls and a soft contact with the solid, predictor-corrector or "
-         "Verlet stepping (seed 004 section 2, fluid_solver/wcsph, docs/wcsph.md).",
+         "Verlet stepping (Islam 2023 (004) section 2, fluid_solver/wcsph, docs/wcsph.md).",
      .key_tables = wcsph_tables, .n_key_tables = N_TABLES(wcsph_tables),
      .own_keys = &fsi_wcsph_keys, .support = wcsph_support, .objects = fsi_fluid_object_kinds,
      .n_objects = FSI_FLUID_N_OBJECT_KINDS, .check = fluid_geometry_check},
@@ -137,7 +137,8 @@ static const fsi_solver_spec solvers[] = {
      .description =
          "Incompressible SPH: a projection with a pressure Poisson equation solved every step "
          "(BiCGSTAB with ILU(0)), free-surface detection, particle shifting, dummy walls and "
-         "the solid as unknowns of the Poisson equation (seed 003 section 2.1, "
+         "the solid as unknowns of the Poisson equation (Salehizadeh & Shafiei "
+         "2022 (003) section 2.1, "
          "fluid_solver/isph, docs/isph.md).",
      .key_tables = isph_tables, .n_key_tables = N_TABLES(isph_tables),
      .own_keys = &fsi_isph_keys, .support = isph_support, .objects = fsi_fluid_object_kinds,

@@ -9,16 +9,24 @@
 #include <string.h>
 #include <unistd.h>
 
+#include "cli_args.h"
+#include "log.h"
 #include "run_plan.h"
 #include "solver_registry.h"
 
+static void usage(FILE *out)
+{
+    fprintf(out, "usage: fsi solvers\n"
+                 "  the solvers a case may name: role, name, kind, program, built or not\n");
+}
+
 int main(int argc, char **argv)
 {
-    (void)argv;
-    if (argc > 1) {
-        fprintf(stderr, "usage: fsi solvers\n");
-        return 2;
-    }
+    fsi_args a = fsi_args_begin(argc, argv, "fsi solvers", usage);
+    while (fsi_args_next(&a))
+        fsi_arg_unknown(&a);
+    if (a.error)
+        return FSI_EXIT_BAD_INPUT;
     const fsi_case_schema *schema = fsi_project_schema();
     char bin[PATH_MAX];
     fsi_bin_dir(bin, sizeof bin);

@@ -5,7 +5,7 @@
 #include <stdio.h>
 #include <string.h>
 
-/* f(s) of the benchmark's mode shape (benchmarks.md S2), unnormalised. */
+/* f(s) of the benchmark's mode shape (003 Eq. 52, docs/validation.md S2), unnormalised. */
 static double mode_f(double s, double length)
 {
     double kl = SOLID_MODE_KL, k = kl / length;

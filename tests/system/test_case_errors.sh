@@ -50,7 +50,7 @@ expect_bad duplicate "^bad.ini:16: \[fluid\] damping: .*15"
 cp good.ini bad.ini
 expect_bad bad_set "^--set solid.particles=0: \[solid\] particles: 0 must be >= 1" --set solid.particles=0
 expect_bad bad_set_form "^--set nodot" --set nodot
-expect_bad unknown_option "unknown or incomplete option '--frobnicate'" --frobnicate
+expect_bad unknown_option "unknown option '--frobnicate'" --frobnicate
 
 set +e
 "$FSI_RUN" does_not_exist.ini --out out_missing >missing.txt 2>&1

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# F0 hydrostatic tank (docs/benchmarks.md; cases/f0_hydrostatic_tank.ini) with the ULPH
+# F0 hydrostatic tank (docs/validation.md F0; cases/f0_hydrostatic_tank.ini) with the ULPH
 # fluid alone, at dx = 0.025 m (40 x 20 fluid particles, walls four layers of 0.1 m),
 # coarser than the case's 0.02 m, so that the full 2 s run takes about 25 s. The
 # bounds are those of the issue (Core 3/4), for t = 2 s:

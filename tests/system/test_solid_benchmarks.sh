@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The NOSB-PD solid (and TLSPH on S2) against the analytical references of
-# docs/benchmarks.md, at the coarsest resolutions of bench/solid_validation.sh (which
+# docs/validation.md, at the coarsest resolutions of bench/solid_validation.sh (which
 # runs the full tables):
 #   S1 cantilever at dx = 0.02 m: tip deflection within 2 % of Timoshenko's value at
 #      the loaded column (the bound at dx = 0.01; measured +0.83 % at 0.02, and

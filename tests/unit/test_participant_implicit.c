@@ -190,9 +190,43 @@ static void test_added_mass(void)
     fsi_case_free(c);
 }
 
+/* The motion sent depends on the window's length and the last window's (the
+ * acceleration 2 (u - u_prev) / (dt + dt_prev)), so the secant history is dropped when
+ * either changes (history_restarted bit 2): window 1 follows the zero-length window 0,
+ * so window 2 starts afresh; equal windows keep it; a window cut short drops it again,
+ * and so do the next two (whose predecessor, and whose history's predecessor, was
+ * short). */
+static void test_history_and_window_lengths(void)
+{
+    fsi_case *c = case_with("iqn_ils");
+    implicit_solid is;
+    char msg[512];
+    CHECK(implicit_solid_init(&is, c, msg, sizeof msg) == 0, "init: %s", msg);
+    state s;
+    make_state(&s);
+    const double dts[][2] = {{2e-4, 0}, {2e-4, 2e-4}, {2e-4, 2e-4}, {1e-4, 2e-4},
+                             {2e-4, 1e-4}, {2e-4, 2e-4}, {2e-4, 2e-4}};
+    const int expected[] = {0, 2, 0, 2, 2, 2, 0};
+    for (int w = 0; w < 7; w++) {
+        CHECK(implicit_solid_motion(&is, 0, dts[w][0], dts[w][1], &s.d, msg, sizeof msg) == 0,
+              "%s", msg);
+        CHECK(is.restarted == expected[w], "window %d (dt %g after %g): history_restarted %d, "
+              "expected %d", w + 1, dts[w][0], dts[w][1], is.restarted, expected[w]);
+        double x_end[N * FSI_DIM];
+        fsi_interface end;
+        for (int k = 0; k < N * FSI_DIM; k++)
+            is.force[k] = 0.0;
+        end_state(&s, is.u_in, dts[w][0], x_end, &end);
+        CHECK(implicit_solid_window_end(&is, &end, msg, sizeof msg) == 0, "%s", msg);
+    }
+    implicit_solid_free(&is);
+    fsi_case_free(c);
+}
+
 int main(void)
 {
     test_motion_and_verdict();
     test_added_mass();
+    test_history_and_window_lengths();
     return unit_check_report("test_participant_implicit");
 }
