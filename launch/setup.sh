@@ -6,6 +6,9 @@ set -euo pipefail
 PACKAGES=(
   build-essential cmake pkg-config
   liblcm-dev liblcm-bin
+  # lcm.jar and the charts lcm-spy draws with, for `fsi spy` (3 MB with what they
+  # pull in); the build makes the message types for it with the JDK when there is one
+  liblcm-java libjchart2d-java
   libhdf5-dev hdf5-tools
   libinih-dev
   libsuitesparse-dev
