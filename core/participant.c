@@ -63,6 +63,9 @@ struct fsi_participant {
     int window, iteration;
     int implicit;           /* [run] scheme = implicit */
     int window_complete;    /* after fsi_advance: the window is accepted */
+    /* fsi_set_progress: reported with every done_t once set (progress_set). */
+    int progress_set;
+    double progress_step, progress_speed;
     double t, dt;
     int flags, frame;
     int finished;
@@ -953,11 +956,21 @@ static void test_kill_switch(const fsi_participant *p)
     raise(SIGKILL);
 }
 
+void fsi_set_progress(fsi_participant *p, double step, double max_speed)
+{
+    p->progress_set = 1;
+    p->progress_step = step;
+    p->progress_speed = max_speed;
+}
+
 int fsi_advance(fsi_participant *p, double dt_next_max)
 {
     test_stall_switch(p);
     test_slow_switch(p);
-    int rc = send_done(p, FSI_STATUS_OK, dt_next_max, 0, NULL, NULL);
+    char *names[] = {"step", "max_speed"};
+    double values[] = {p->progress_step, p->progress_speed};
+    int rc = send_done(p, FSI_STATUS_OK, dt_next_max, p->progress_set ? 2 : 0,
+                       p->progress_set ? names : NULL, p->progress_set ? values : NULL);
     p->window_complete = 1;
     if (p->implicit) {
         /* The coupler's verdict: the next grant is another window, or this one again. */

@@ -138,6 +138,12 @@ int fsi_window_complete(const fsi_participant *p);
 /* Value of a probe at the end of the current window. */
 void fsi_set_probe(fsi_participant *p, int index, double value);
 
+/* Optional: this participant's own step [s] (its last sub-step in the window) and its
+ * largest particle speed [m/s] at the window's end, for the coupler's progress line;
+ * sent with the next fsi_advance() (done_t's stats "step" and "max_speed",
+ * docs/protocol.md) and every one after it, until changed. */
+void fsi_set_progress(fsi_participant *p, double step, double max_speed);
+
 /* Reports the window done and proposes the largest next window [s]. */
 int fsi_advance(fsi_participant *p, double dt_next_max);
 

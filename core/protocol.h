@@ -8,8 +8,10 @@
  * density to solid_state_t, version 4 the implicit coupling's verdict to done_t
  * (converged, residuals, history) and repeated windows (step_t of the same window
  * with a higher header.iteration), and coupled checkpoints (FSI_STEP_CHECKPOINT,
- * done_t.checkpoint). */
-#define FSI_PROTOCOL_VERSION 4
+ * done_t.checkpoint), version 5 every done_t's stats: the sender's step and largest
+ * speed of the window ("step", "max_speed"; fsi_set_progress), not only the final
+ * report's timers. */
+#define FSI_PROTOCOL_VERSION 5
 
 /* Message kinds; each travels on its own channel (fsi_msg_channel). */
 typedef enum {

@@ -57,6 +57,10 @@ typedef struct {
     int n_stats;
     char **stat_names;
     double *stat_values;
+    /* Its own step [s] and largest speed [m/s] of the last window, for the progress
+     * line (the "step" and "max_speed" of a done_t's stats, fsi_set_progress); NAN
+     * when it reports none (the examples). */
+    double step, max_speed;
     /* When to ask again for this window's done_t (core/request_timer.h). */
     fsi_wait_estimate done_wait;
     fsi_request_timer done_timer;
@@ -76,6 +80,7 @@ typedef struct {
     char culprit[64];
     char reason[1024];
     fsi_progress progress;
+    double window_dt;       /* the length of the last window granted [s] */
     fsi_probes_csv probes;
     fsi_probes_csv coupling_csv;    /* implicit: one row per iteration */
     /* [run] scheme = implicit and what ends a window's iterations */
@@ -211,6 +216,12 @@ static void take_done(coupler *c, participant_info *p, const fsi_done_t *d)
     fsi_request_timer_arrived(&p->done_timer, fsi_wall_seconds(), fsi_bus_message_is_new(c->bus),
                               fsi_bus_measured_loss(c->bus));
     p->dt_proposed = d->dt_next_max;
+    for (int s = 0; s < d->n_stats && d->status != FSI_STATUS_FINISHED; s++) {
+        if (strcmp(d->stat_names[s], "step") == 0)
+            p->step = d->stat_values[s];
+        else if (strcmp(d->stat_names[s], "max_speed") == 0)
+            p->max_speed = d->stat_values[s];
+    }
     if (d->n_probes > 0)   /* an empty array may arrive as NULL */
         memcpy(p->probe_values, d->probe_values, (size_t)d->n_probes * sizeof(double));
     if (d->status == FSI_STATUS_FINISHED) {
@@ -288,6 +299,28 @@ static int register_participants(coupler *c)
 
 /* Waits for every participant's done_t of the current window, asking again for
  * missing ones once they are overdue; returns -1 when the run failed meanwhile. */
+
+/* The progress line (progress.h) with the window granted last and each participant's
+ * own step and largest speed as its done_t reported them (fsi_set_progress; nothing
+ * for a participant that reports none). */
+static void update_progress(coupler *c, int force)
+{
+    char *d = c->progress.detail;
+    const size_t size = sizeof c->progress.detail;
+    size_t at = (size_t)snprintf(d, size, "window %.3g s", c->window_dt);
+    for (int i = 0; i < c->n_part && at < size; i++)
+        if (isfinite(c->part[i].step))
+            at += (size_t)snprintf(d + at, size - at, ", %s step %.3g s", c->part[i].name,
+                                   c->part[i].step);
+    for (int i = 0, first = 1; i < c->n_part && at < size; i++)
+        if (isfinite(c->part[i].max_speed)) {
+            at += (size_t)snprintf(d + at, size - at, "%s%s %.3g m/s",
+                                   first ? " | max speed " : ", ", c->part[i].name,
+                                   c->part[i].max_speed);
+            first = 0;
+        }
+    fsi_progress_update(&c->progress, c->t, c->window, force);
+}
 static int wait_for_done(coupler *c)
 {
     double now = fsi_wall_seconds();
@@ -332,7 +365,7 @@ static int wait_for_done(coupler *c)
         if (c->failed)
             return -1;
         fsi_bus_poll(c->bus, next_event - now);
-        fsi_progress_update(&c->progress, c->t, c->window, 0);
+        update_progress(c, 0);
     }
 }
 
@@ -608,6 +641,7 @@ static int run_windows(coupler *c)
         if (c->iteration == 0)
             granted = fsi_wall_seconds();
         const int checkpoint = c->iteration == 0 && c->window == c->checkpoint_window;
+        c->window_dt = plan.dt;
         publish_step(c, plan.dt, (plan.probe ? FSI_STEP_PROBE : 0) |
                                      (checkpoint ? FSI_STEP_CHECKPOINT : 0), plan.frame);
         if (wait_for_done(c) != 0)
@@ -627,7 +661,7 @@ static int run_windows(coupler *c)
         c->t = plan.t_next;
         if (plan.probe && write_probe_row(c, c->t) != 0)
             return -1;
-        fsi_progress_update(&c->progress, c->t, c->window, 0);
+        update_progress(c, 0);
         if (plan.last)
             break;
         /* A checkpoint at the first frame time from each multiple of the interval on:
@@ -783,6 +817,7 @@ static int setup(coupler *c)
         p->done_window = -1;
         p->converged = -1;
         p->dt_proposed = DBL_MAX;
+        p->step = p->max_speed = NAN;
     }
     if (c->n_part == 0) {
         fsi_error("the case has neither [fluid] nor [solid]: nothing to couple");
@@ -834,7 +869,7 @@ int main(void)
     int rc = register_participants(&c);
     if (rc == 0)
         rc = run_windows(&c);
-    fsi_progress_update(&c.progress, c.t, c.window, 1);
+    update_progress(&c, 1);
     if (c.progress.tty)
         fputc('\n', stdout);
     if (rc == 0 && !c.failed) {

@@ -12,6 +12,7 @@ void fsi_progress_init(fsi_progress *p, FILE *out, double interval, double t_end
     p->wall_start = p->wall_last = fsi_wall_seconds();
     p->windows_last = 0;
     p->tty = isatty(fileno(out));
+    p->detail[0] = '\0';
 }
 
 void fsi_duration_text(char *buf, size_t len, double s)
@@ -39,9 +40,9 @@ void fsi_progress_update(fsi_progress *p, double t, long windows, int force)
         fsi_duration_text(eta, sizeof eta, elapsed * (1.0 - fraction) / fraction);
     char spent[32];
     fsi_duration_text(spent, sizeof spent, elapsed);
-    fprintf(p->out, "%st = %.6g s / %.6g s (%5.1f %%) | %ld windows, %.0f windows/s | elapsed %s, ETA %s%s",
-            p->tty ? "\r" : "", t, p->t_end, 100.0 * fraction, windows, rate, spent, eta,
-            p->tty ? "   " : "\n");
+    fprintf(p->out, "%st = %.6g s / %.6g s (%5.1f %%) | %ld windows, %.0f windows/s | %s%s"
+            "elapsed %s, ETA %s%s", p->tty ? "\r" : "", t, p->t_end, 100.0 * fraction, windows,
+            rate, p->detail, p->detail[0] ? " | " : "", spent, eta, p->tty ? "   " : "\n");
     fflush(p->out);
     p->wall_last = now;
     p->windows_last = windows;

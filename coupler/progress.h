@@ -1,5 +1,6 @@
-/* Progress line of a running case: simulated time, percent, windows per second and
- * the estimated time left, printed at most every interval seconds of wall time. */
+/* Progress line of a running case: simulated time, percent, windows per second, the
+ * caller's detail (the step sizes and largest speeds), and the estimated time left,
+ * printed at most every interval seconds of wall time. */
 #ifndef FSI_PROGRESS_H
 #define FSI_PROGRESS_H
 
@@ -14,6 +15,9 @@ typedef struct {
     double wall_last;
     long windows_last;
     int tty;
+    /* Printed between the rate and the elapsed time when not empty: the coupler's
+     * window and what the participants report of their steps and speeds. */
+    char detail[256];
 } fsi_progress;
 
 /* Durations from this on (a thousand hours) are not worth a number: the ETA of a run

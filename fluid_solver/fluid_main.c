@@ -24,6 +24,7 @@
 
 #include "dim.h"
 #include "fluid_coupling.h"
+#include "fluid_diagnostics.h"
 #include "fluid_geometry.h"
 #include "fluid_leak.h"
 #include "fluid_output_info.h"
@@ -96,6 +97,14 @@ typedef struct {
     /* The penetration check (fluid_coupling_count_inside), after every window. */
     long inside_windows;        /* windows with a fluid particle inside the solid */
     int inside_max;             /* most fluid particles inside at once */
+    /* Diagnostics (fluid_diagnostics.h): the file, its length at the restored
+     * checkpoint (-1: a fresh run), the steps at the window's start, the last step,
+     * the fluid particles inside the solid at the window's end. */
+    fluid_diagnostics diagnostics;
+    off_t diagnostics_resume;
+    long window_first_step;
+    double last_step;
+    int inside_last;
     int capacity;       /* particles drho .. grad_p hold */
     int *order;         /* original index (output row) of the particle at each index of
                          * the fixed part; they are sorted by cell now and then */
@@ -120,6 +129,7 @@ static void free_run(fluid_run *s)
     fluid_wall_motion_free(&s->motion);
     fluid_coupling_free(&s->coupling);
     fluid_leak_free(&s->leak);
+    fluid_diagnostics_close(&s->diagnostics);
     fluid_particles_free(&s->p);
     free(s->order);
     fluid_geometry_free(&s->geometry);
@@ -139,43 +149,6 @@ static void fluid_momentum(const fluid_particles *p, double *momentum)
         if (p->flags[i] & FLUID_PARTICLE_FLUID)
             for (int d = 0; d < FSI_DIM; d++)
                 momentum[d] += p->mass[i] * p->v[i * FSI_DIM + d];
-}
-
-static double kinetic_energy(const fluid_particles *p)
-{
-    double e = 0.0;
-    for (int i = 0; i < p->n; i++)
-        if (p->flags[i] & FLUID_PARTICLE_FLUID)
-            e += 0.5 * p->mass[i] * fsi_vec_dot(&p->v[i * FSI_DIM], &p->v[i * FSI_DIM]);
-    return e;
-}
-
-/* Compression energy sum m p^2 / (2 rho^2 c^2), c^2 = c0^2 (rho / rho0)^(gamma - 1) the
- * local dp/drho of 000 Eq. 6: the work stored by compressing the fluid to its pressure
- * (exact for a linear equation of state, a bound's worth here). A fluid started at the
- * hydrostatic pressure holds it, and it can turn into motion. */
-static double compression_energy(const fluid_particles *p, const fluid_properties *pr)
-{
-    double e = 0.0;
-    for (int i = 0; i < p->n; i++) {
-        if (!(p->flags[i] & FLUID_PARTICLE_FLUID))
-            continue;
-        const double rho = p->density[i];
-        const double c2 = pr->sound_speed * pr->sound_speed *
-                          pow(rho / pr->density, pr->tait_exponent - 1.0);
-        e += p->mass[i] * p->pressure[i] * p->pressure[i] / (2.0 * rho * rho * c2);
-    }
-    return e;
-}
-
-/* -sum m g . x over the fluid: what gravity can turn into kinetic energy. */
-static double potential_energy(const fluid_particles *p, const double *gravity)
-{
-    double e = 0.0;
-    for (int i = 0; i < p->n; i++)
-        if (p->flags[i] & FLUID_PARTICLE_FLUID)
-            e -= p->mass[i] * fsi_vec_dot(gravity, &p->x[i * FSI_DIM]);
-    return e;
 }
 
 /* initial_pressure = hydrostatic: p = rho0 |g| depth, the depth below the corner of the
@@ -382,11 +355,12 @@ static int setup(fluid_run *s, fsi_participant *part)
         if (p->flags[i] & FLUID_PARTICLE_FLUID)
             mass += p->mass[i];
     s->energy_floor = ENERGY_FLOOR * mass * pr->sound_speed * pr->sound_speed;
-    s->kinetic0 = kinetic_energy(p);
+    s->kinetic0 = fluid_kinetic_energy(p);
     fluid_momentum(p, s->momentum0);
-    /* an incompressible fluid stores no energy in its pressure */
-    s->compression0 = fluid_scheme_compressible(s->scheme) ? compression_energy(p, pr) : 0.0;
-    s->potential0 = potential_energy(p, pr->gravity);
+    /* The energy the fluid's pressure stores (none in an incompressible fluid): a
+     * fluid started at the hydrostatic pressure holds it, and it can turn into motion. */
+    s->compression0 = fluid_compression_energy(p, s->scheme);
+    s->potential0 = fluid_potential_energy(p, pr->gravity);
 
     s->out = fsi_h5_create(fsi_output_dir(part), fsi_participant_name(part),
                            fsi_case_get(c, ROLE, "solver"));
@@ -516,6 +490,7 @@ static int step(fluid_run *s, double dt)
     if (fluid_scheme_step(s->scheme, &s->p, t_start, dt, &hooks, s->msg, sizeof s->msg) != 0)
         return -1;
     s->t = t_start + dt;
+    s->last_step = dt;
     fsi_timer_start(&s->timers, s->t_integrate);
     if (fsi_periodic_any(&s->props.periodic))
         wrap_periodic(s);
@@ -632,8 +607,8 @@ static int check_health(fluid_run *s, double t, const char *window)
     /* Without inflow K + P + E_c = K0 + P0 + E_c0 - (dissipation), with the potential
      * energy P and the compression energy E_c >= 0, so K(t) <= K0 + E_c0 + (P0 - P(t));
      * an unstable integration makes energy from nothing. */
-    double kinetic = kinetic_energy(p), released = s->potential0 -
-                                                   (potential_energy(p, s->props.gravity) +
+    double kinetic = fluid_kinetic_energy(p), released = s->potential0 -
+                                                   (fluid_potential_energy(p, s->props.gravity) +
                                                     s->potential_wrapped);
     /* Moving walls and the solid add their work; unknown (NAN: walls with different
      * motions) lifts the bound. */
@@ -715,6 +690,7 @@ static int check_penetration(fluid_run *s, double t, const char *window)
                  inside, t, window, s->p.id[first], where_text(s, first, at, sizeof at));
     }
     s->inside_windows += inside > 0;
+    s->inside_last = inside;
     if (inside > s->inside_max)
         s->inside_max = inside;
     return 0;
@@ -724,6 +700,7 @@ static int check_penetration(fluid_run *s, double t, const char *window)
  * written byte for byte). */
 typedef struct {
     int64_t n, n_fixed, steps, reordered_at, inside_windows, inside_max, mach_warned;
+    int64_t diagnostics_bytes;  /* the complete rows of the diagnostics file */
     double t, wall_work, potential_wrapped, stable_dt;
 } run_header;
 
@@ -744,8 +721,9 @@ static int save_state(fluid_run *s)
     const size_t n = (size_t)p->n, vec = n * FSI_DIM * sizeof(double);
     const size_t n_fixed = (size_t)s->n_fixed;
     const run_header h = {p->n, s->n_fixed, s->steps, s->reordered_at, s->inside_windows,
-                          s->inside_max, s->mach_warned, s->t, s->wall_work,
-                          s->potential_wrapped, s->stable_dt};
+                          s->inside_max, s->mach_warned,
+                          (int64_t)fluid_diagnostics_bytes(&s->diagnostics), s->t,
+                          s->wall_work, s->potential_wrapped, s->stable_dt};
     fsi_state_clear(st);
     fsi_state_put(st, "run.header", &h, sizeof h);
     fsi_state_put(st, "particles.id", p->id, n * sizeof *p->id);
@@ -817,11 +795,26 @@ static int restore_state(fluid_run *s, const fsi_state *st)
     s->inside_windows = (long)h.inside_windows;
     s->inside_max = (int)h.inside_max;
     s->mach_warned = (int)h.mach_warned;
+    s->diagnostics_resume = (off_t)h.diagnostics_bytes;
     s->t = h.t;
     s->wall_work = h.wall_work;
     s->potential_wrapped = h.potential_wrapped;
     s->stable_dt = h.stable_dt;
     return 0;
+}
+
+/* The diagnostics row of an accepted window (fluid_diagnostics.h), timed as output. */
+static int write_diagnostics(fluid_run *s, double t, int window, double dt)
+{
+    const fluid_window_summary w = {window, dt, s->steps - s->window_first_step,
+                                    s->last_step, s->wall_work, s->potential_wrapped,
+                                    s->coupling.work_at_sent, 0.0 - s->coupling.work_on_fluid,
+                                    s->inside_last};
+    fsi_timer_start(&s->timers, s->t_output);
+    const int rc = fluid_diagnostics_write(&s->diagnostics, t, &s->p, s->scheme,
+                                           s->props.gravity, &w, s->msg, sizeof s->msg);
+    fsi_timer_stop(&s->timers, s->t_output);
+    return rc;
 }
 
 /* Every phase's seconds and share of the busy time (the main loop's own phases; the
@@ -858,8 +851,16 @@ int main(void)
         return FSI_EXIT_RUN_FAILURE;
     }
     /* A restarted run goes on from the checkpoint's state (docs/checkpoints.md). */
+    s.diagnostics_resume = -1;
     if (fsi_restart_state(part) && restore_state(&s, fsi_restart_state(part)) != 0) {
         fsi_abort(part, "restart: %s", s.msg);
+        free_run(&s);
+        return FSI_EXIT_RUN_FAILURE;
+    }
+    /* Cut back to the checkpoint's window at a restart, as probes.csv. */
+    if (fluid_diagnostics_open(&s.diagnostics, fsi_output_dir(part), fsi_participant_name(part),
+                               s.diagnostics_resume, s.msg, sizeof s.msg) != 0) {
+        fsi_abort(part, "%s", s.msg);
         free_run(&s);
         return FSI_EXIT_RUN_FAILURE;
     }
@@ -885,6 +886,7 @@ int main(void)
             fsi_abort(part, "%s: cannot write the fluid's checkpoint", s.window);
             break;
         }
+        s.window_first_step = s.steps;
         fsi_timer_start(&s.timers, s.t_exchange);
         int rc = receive(&s, part, t0);
         fsi_timer_stop(&s.timers, s.t_exchange);
@@ -919,6 +921,7 @@ int main(void)
             fluid_scheme_pressure_gradient(s.scheme, &s.p, s.grad_p);
             fluid_probes_set(&s.probes, &s.p, s.grad_p, t0 + dt, part);
         }
+        fsi_set_progress(part, s.last_step, fluid_max_speed(&s.p));
         /* Coupled, the window is the fluid's step: the solid's motion it sees and the
          * loads it returns are then as fresh as the fluid's own state. */
         fsi_advance(part, fsi_coupled(part) && s.stable_dt > 0.0 ? s.stable_dt : DBL_MAX);
@@ -934,17 +937,18 @@ int main(void)
                 break;
             }
         }
+        if (fsi_window_complete(part) && write_diagnostics(&s, t0 + dt, window, dt) != 0) {
+            fsi_abort(part, "%s: %s", s.window, s.msg);
+            break;
+        }
     }
     if (s.scheme) {
-        double vmax = 0.0;
-        for (int i = 0; i < s.p.n; i++)
-            if (s.p.flags[i] & FLUID_PARTICLE_FLUID)
-                vmax = fmax(vmax, fsi_vec_norm(&s.p.v[i * FSI_DIM]));
         fsi_info("energy at the end: kinetic %.6g J (initial %.6g J), compression %.6g J "
                  "(initial %.6g J), potential energy released %.6g J; largest fluid speed "
-                 "%.4g m/s", kinetic_energy(&s.p), s.kinetic0,
-                 compression_energy(&s.p, &s.props), s.compression0,
-                 s.potential0 - potential_energy(&s.p, s.props.gravity), vmax);
+                 "%.4g m/s", fluid_kinetic_energy(&s.p), s.kinetic0,
+                 fluid_compression_energy(&s.p, s.scheme), s.compression0,
+                 s.potential0 - fluid_potential_energy(&s.p, s.props.gravity),
+                 fluid_max_speed(&s.p));
         /* One particle-step is one fluid particle through one predictor-corrector step
          * (two evaluations of the rates), the unit docs/performance.md uses. */
         const double busy = s.timers.seconds[s.t_rates] + s.timers.seconds[s.t_integrate];

@@ -59,6 +59,11 @@ double fluid_scheme_pressure(const fluid_scheme *s, double density);
 /* Density of a given pressure (the inverse, for initial conditions and walls). */
 double fluid_scheme_density(const fluid_scheme *s, double pressure);
 
+/* The energy a fluid particle of this density stores by its compression [J/kg]: the
+ * pressure's work from rho0, int p / rho^2 drho, of the scheme's equation of state (a
+ * diagnostic, fluid_diagnostics.h). 0 for a projection scheme, which stores none. */
+double fluid_scheme_compression_energy(const fluid_scheme *s, double density);
+
 /* Rates at the current state: drho_dt[n], dv_dt[n * FSI_DIM] (gravity included).
  * Returns 0, or -1 with msg (memory, a non-finite position). */
 int fluid_scheme_rates(fluid_scheme *s, fluid_particles *p, double *drho_dt, double *dv_dt,

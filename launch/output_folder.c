@@ -26,12 +26,13 @@ static const char *const run_files[] = {
     "replay.log",                                     /* fsi replay */
     "c1_elastic_plate.png", "c1_elastic_plate.md",    /* fsi main (launch/fsi) */
     "c1_snapshots.png",                               /* fsi main (launch/fsi) */
+    "diagnostics.png",                                /* fsi plot, fsi main */
 };
 /* ... and of each participant P (every role a case may have): P.h5, P.xmf, P.log,
- * the temporaries of their atomic rewrites, and the folder P.frames/ of per-frame
- * files. */
+ * the temporaries of their atomic rewrites, P_diagnostics.csv, and the folder
+ * P.frames/ of per-frame files. */
 static const char *const participant_suffixes[] = {".h5", ".xmf", ".log", ".xmf.tmp",
-                                                   ".h5.tmp"};
+                                                   ".h5.tmp", "_diagnostics.csv"};
 static const char frames_suffix[] = ".frames";
 
 /* 1 when 'name' is a role followed by 'suffix'. */

@@ -169,6 +169,18 @@ double solid_kinetic_energy(const solid_particles *p)
     return e;
 }
 
+double solid_potential_energy(const solid_particles *p, const double *gravity)
+{
+    double e = 0.0;
+    for (int i = 0; i < p->n; i++) {
+        double gx = 0.0;
+        for (int d = 0; d < FSI_DIM; d++)
+            gx += gravity[d] * p->x[i * FSI_DIM + d];
+        e -= is_material(p, i) ? mass_of(p, i) * gx : 0.0;
+    }
+    return e;
+}
+
 double solid_total_mass(const solid_particles *p)
 {
     double m = 0.0;

@@ -84,6 +84,10 @@ void solid_mirror_forces(const solid_particles *p, double *internal);
  * thickness in 2D]. */
 double solid_kinetic_energy(const solid_particles *p);
 
+/* Gravity's potential -sum m g . x over material points, zero at the origin [J, per
+ * unit thickness in 2D]. */
+double solid_potential_energy(const solid_particles *p, const double *gravity);
+
 /* Total mass of the material points [kg, per unit thickness in 2D]. */
 double solid_total_mass(const solid_particles *p);
 

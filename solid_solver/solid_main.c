@@ -32,6 +32,7 @@
 #include "material.h"
 #include "participant.h"
 #include "particle_health.h"
+#include "solid_diagnostics.h"
 #include "solid_integrate.h"
 #include "solid_interface.h"
 #include "solid_loads.h"
@@ -78,6 +79,10 @@ typedef struct {
      * from the other by the one-window lag of u. The fluid logs what it sent;
      * tests/system/test_coupled_plate.sh compares them. */
     double fluid_impulse[FSI_DIM], fluid_work_at_sent, fluid_work;
+    /* The interface impedance's work, sum m c (u - v) . (x - x_prev) over the sub-steps
+     * with v the sub-step's mean velocity, as the integrator counts it in 'work' [J]:
+     * what the solid's answer for the fluid inside the window took (docs/coupling.md). */
+    double impedance_work;
     double dt_last;                 /* the last window's length (what v_mean spans) */
     double box_min[FSI_DIM], box_max[FSI_DIM];
     fsi_h5_writer *out;
@@ -88,6 +93,13 @@ typedef struct {
      * evaluation computed, those of repeated windows included (as the timers). */
     long substeps_computed, force_calls;
     fsi_state saved;                /* the state at the window's start (save_state) */
+    /* Diagnostics (solid_diagnostics.h): the file, the length of its complete rows at
+     * the window's start (saved with the state: a restart cuts it back to that), the
+     * sub-steps at the window's start, the energies check_health computed. */
+    solid_diagnostics diagnostics;
+    int64_t diagnostics_bytes;
+    long window_first_substep;
+    double kinetic, strain;
     char msg[512];
 } solid_run;
 
@@ -112,6 +124,7 @@ static void free_run(solid_run *s)
     solid_loads_free(&s->loads);
     solid_interface_free(&s->iface);
     solid_rk4_free(&s->rk4_state);
+    solid_diagnostics_close(&s->diagnostics);
     solid_particles_free(&s->p);
     solid_geometry_free(&s->geometry);
     free(s->f_int);
@@ -135,7 +148,7 @@ static void free_run(solid_run *s)
  * loads and the impedance (exchange), the held force, the external forces, x_prev
  * and the RK4 stages (advance); the prescribed loads and the probes are functions of
  * the time and the particles. */
-enum { RUN_STATE_FIELDS = 17 };
+enum { RUN_STATE_FIELDS = 19 };
 
 static int run_state_fields(solid_run *s, fsi_state_field *f)
 {
@@ -162,7 +175,11 @@ static int run_state_fields(solid_run *s, fsi_state_field *f)
     f[k++] = (fsi_state_field){"solid.fluid_work_at_sent", &s->fluid_work_at_sent,
                                  sizeof s->fluid_work_at_sent};
     f[k++] = (fsi_state_field){"solid.fluid_work", &s->fluid_work, sizeof s->fluid_work};
+    f[k++] = (fsi_state_field){"solid.impedance_work", &s->impedance_work,
+                                 sizeof s->impedance_work};
     f[k++] = (fsi_state_field){"solid.substeps", &s->substeps, sizeof s->substeps};
+    f[k++] = (fsi_state_field){"solid.diagnostics_bytes", &s->diagnostics_bytes,
+                                 sizeof s->diagnostics_bytes};
     return k;
 }
 
@@ -171,6 +188,7 @@ static int run_state_fields(solid_run *s, fsi_state_field *f)
 static int save_state(solid_run *s)
 {
     fsi_state_field f[RUN_STATE_FIELDS];
+    s->diagnostics_bytes = (int64_t)solid_diagnostics_bytes(&s->diagnostics);
     fsi_state_clear(&s->saved);
     if (fsi_state_put_fields(&s->saved, f, run_state_fields(s, f)) != 0 ||
         solid_model_save_state(s->model, &s->p, &s->saved) != 0) {
@@ -525,8 +543,15 @@ static int advance(solid_run *s, double t0, double dt, int window)
                          "%ld)", window, j + 1, n);
             return -1;
         }
-        for (int k = 0; k < p->n * FSI_DIM; k++)
-            s->fluid_work += s->f_fluid[k] * (p->x[k] - s->x_prev[k]);
+        for (int i = 0; i < p->n; i++) {
+            const double mc = s->interface_damping[i] * p->density[i] * p->volume[i];
+            for (int d = 0; d < FSI_DIM; d++) {
+                const int k = i * FSI_DIM + d;
+                const double dx = p->x[k] - s->x_prev[k];
+                s->fluid_work += s->f_fluid[k] * dx;
+                s->impedance_work += mc * (s->iface.u_fluid[k] - dx / h) * dx;
+            }
+        }
         s->work += dw;
         s->work_in += fmax(dw, 0.0);
         if (rc != 0) {
@@ -559,6 +584,8 @@ static int check_health(solid_run *s, double t, int window)
     double kinetic = solid_kinetic_energy(p);
     double strain = solid_model_strain_energy(s->model, p);
     double energy = kinetic + strain, budget = s->energy0 + s->work_in;
+    s->kinetic = kinetic;
+    s->strain = strain;
     if (!isfinite(energy) || energy > s->energy_limit * budget + s->energy_floor) {
         /* Name the fastest particle: where the instability is growing. */
         double speed;
@@ -601,6 +628,19 @@ static int write_frame(solid_run *s, int frame, double t, long window)
     return fsi_h5_end_frame(s->out);
 }
 
+/* The diagnostics row of an accepted window (solid_diagnostics.h), timed as output. */
+static int write_diagnostics(solid_run *s, double t, int window, double dt)
+{
+    const solid_window_summary w = {window, dt, s->substeps - s->window_first_substep,
+                                    s->kinetic, s->strain, s->work, s->fluid_work,
+                                    s->fluid_work_at_sent, s->impedance_work, s->f_fluid};
+    fsi_timer_start(&s->timers, s->t_output);
+    const int rc = solid_diagnostics_write(&s->diagnostics, t, &s->p, s->integrator.gravity,
+                                           &w, s->msg, sizeof s->msg);
+    fsi_timer_stop(&s->timers, s->t_output);
+    return rc;
+}
+
 int main(void)
 {
     fsi_participant *part = fsi_open(NULL, ROLE, NULL, DBL_MAX);
@@ -624,6 +664,15 @@ int main(void)
         free_run(&s);
         return FSI_EXIT_RUN_FAILURE;
     }
+    /* Cut back to the checkpoint's window at a restart, as probes.csv. */
+    if (solid_diagnostics_open(&s.diagnostics, &s.geometry, fsi_output_dir(part),
+                               fsi_participant_name(part),
+                               fsi_restart_state(part) ? (off_t)s.diagnostics_bytes : -1,
+                               s.msg, sizeof s.msg) != 0) {
+        fsi_abort(part, "%s", s.msg);
+        free_run(&s);
+        return FSI_EXIT_RUN_FAILURE;
+    }
 
     while (fsi_ongoing(part)) {
         double dt = fsi_window(part), t0 = fsi_time(part);
@@ -641,6 +690,7 @@ int main(void)
             fsi_abort(part, "window %d: cannot write the solid's checkpoint", window);
             break;
         }
+        s.window_first_substep = s.substeps;
         fsi_timer_start(&s.timers, s.t_exchange);
         int rc = exchange(&s, part);
         fsi_timer_stop(&s.timers, s.t_exchange);
@@ -663,6 +713,11 @@ int main(void)
             break;
         }
         const int frame = fsi_output_frame(part);
+        double speed = 0.0;
+        if (s.p.n > 0)
+            fsi_fastest(s.p.v, s.p.n, &speed);
+        const long substeps = s.substeps - s.window_first_substep;
+        fsi_set_progress(part, substeps > 0 ? dt / (double)substeps : 0.0, speed);
         fsi_advance(part, DBL_MAX);   /* sub-cycling: the solid never limits the window */
         /* Output only of the state the run goes on from. */
         if (frame >= 0 && fsi_window_complete(part)) {
@@ -674,6 +729,10 @@ int main(void)
                           frame, t0 + dt, window, fsi_h5_last_error());
                 break;
             }
+        }
+        if (fsi_window_complete(part) && write_diagnostics(&s, t0 + dt, window, dt) != 0) {
+            fsi_abort(part, "window %d: %s", window, s.msg);
+            break;
         }
     }
     if (s.model) {

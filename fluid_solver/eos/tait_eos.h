@@ -44,6 +44,24 @@ static inline double tait_eos_density(const tait_eos *e, double p)
     return e->rho0 * pow(base > 1e-6 ? base : 1e-6, 1.0 / e->gamma);
 }
 
+/* The energy stored per unit mass by compressing the fluid from rho0 to rho [J/kg]: the
+ * work of the pressure, e = int_rho0^rho p / rho'^2 drho' (de = -p dv, v = 1 / rho),
+ * which for the equation above is, with r = rho / rho0 and B = rho0 c0^2 / gamma,
+ *
+ *     e = B / rho0 ((r^(gamma - 1) - 1) / (gamma - 1) + 1 / r - 1)
+ *
+ * (c0^2 (r - 1)^2 / 2 for small r - 1; its limit ln r for the first term at gamma = 1,
+ * the smallest exponent the keys allow). r < 1 gives e > 0 too: a fluid in tension
+ * stores energy as well. */
+static inline double tait_eos_energy(const tait_eos *e, double rho)
+{
+    const double r = rho / e->rho0, b = e->c0 * e->c0 / e->gamma;
+    const double first = e->gamma == 1.0 ? log(r)
+                                         : (tait_eos_power(r, e->gamma) / r - 1.0) /
+                                               (e->gamma - 1.0);
+    return b * (first + 1.0 / r - 1.0);
+}
+
 /* Every fluid particle's pressure (the equation above) and volume V = m / rho from its
  * density; without tension a density below rho0 is first raised to rho0 (p >= 0: a
  * stretched front keeps its stiffness instead of a density deficit that no pressure

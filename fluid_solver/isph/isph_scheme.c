@@ -206,6 +206,13 @@ double fluid_scheme_density(const fluid_scheme *s, double pressure)
     return s->rho0;
 }
 
+double fluid_scheme_compression_energy(const fluid_scheme *s, double density)
+{
+    (void)s;
+    (void)density;
+    return 0.0;     /* incompressible: the pressure does no work on the particles' volume */
+}
+
 double fluid_scheme_smoothing_length(const fluid_scheme *s)
 {
     return s->kernel.h;

@@ -173,6 +173,11 @@ double fluid_scheme_density(const fluid_scheme *s, double pressure)
     return tait_eos_density(&s->eos, pressure);
 }
 
+double fluid_scheme_compression_energy(const fluid_scheme *s, double density)
+{
+    return tait_eos_energy(&s->eos, density);
+}
+
 double fluid_scheme_smoothing_length(const fluid_scheme *s)
 {
     return s->kernel.h;

@@ -63,6 +63,9 @@ same_results() {
   for f in solid fluid; do
     [ -e "$a/$f.h5" ] || [ -e "$b/$f.h5" ] || continue
     h5_same "$a" "$b" "$f" || fail "$f.h5 (or a file of $f.frames) differs between $a and $b"
+    [ -e "$a/${f}_diagnostics.csv" ] || [ -e "$b/${f}_diagnostics.csv" ] || continue
+    cmp -s "$a/${f}_diagnostics.csv" "$b/${f}_diagnostics.csv" ||
+      fail "${f}_diagnostics.csv differs between $a and $b"
   done
   cmp -s "$a/probes.csv" "$b/probes.csv" || fail "probes.csv differs between $a and $b"
 }

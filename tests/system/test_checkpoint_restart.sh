@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Coupled checkpoints and restart (docs/checkpoints.md): a run interrupted by kill -9 and
 # restarted with `fsi run --restart OUT` ends with the same output, bit for bit (every
-# frame of fluid.h5 and solid.h5 compared with h5diff, probes.csv and coupling.csv with
+# frame of fluid.h5 and solid.h5 compared with h5diff, probes.csv, coupling.csv and the
+# participants' diagnostics (fluid_diagnostics.csv, solid_diagnostics.csv) with
 # cmp), as the same run never interrupted.
 # The scene is test_solver_combinations': C1 with the water against the plate, 0.004 s,
 # frames every 0.001 s, a checkpoint at each (--checkpoint-interval 0.001), windows of at

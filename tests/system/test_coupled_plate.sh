@@ -38,6 +38,7 @@
 #     +5.1 %, bench/c4_plate_under_water.sh) plus what a mean over 0.05 s, about one
 #     period (0.045 s) of the column's +-10 um swing, leaves of that swing: under
 #     +-1.5 um, 2 %.
+# Then the participants' diagnostics (below) and `fsi plot` on them.
 source "$(dirname "$0")/lib.sh"
 PY=/usr/bin/python3
 
@@ -147,3 +148,71 @@ if not windows - 1 <= steps <= 2 * windows:
 sys.exit(0 if ok else 1)
 PY
 pass "C4 at T / dx = 4: stable, sub-cycled, deflection near the elastic answer, load sent = load received, load = weight, window = fluid step"
+
+# The diagnostics of both participants (docs/output.md), in every window:
+#   - the solid's energy balance: kinetic + strain energy changes by the work of every
+#     external force and gravity (external_work), and kinetic + strain + gravity's
+#     potential by the work through the interface, the fluid's loads over the solid's
+#     motion plus the interface impedance's (no prescribed loads, no damping here), to
+#     1e-4 of the largest work: velocity Verlet's energy error at the solid's sub-step
+#     (measured 7.7e-7 at T / dx = 4), far below the terms a wrong sum leaves out (the
+#     impedance's share, printed, about 6 % of the interface work; gravity's 15 %);
+#   - the impedance only takes energy out (its work never positive);
+#   - the work through the interface from both sides: the fluid's sum of its loads at
+#     the velocity the solid sent equals the solid's to 1e-9 (round-off of sums in
+#     another order);
+#   - the fluid's moment on the plate about the origin is its force times x = 0.5 m
+#     (the scene is symmetric about mid-span) to 1e-6;
+#   - no fluid particle inside the solid; the fluid's steps and the solid's sub-steps
+#     summed over the rows are the totals their logs give; one row per window.
+"$PY" - c4 <<'PY' || fail "C4 diagnostics"
+import csv, re, sys
+out = sys.argv[1]
+fl = list(csv.DictReader(open(out + "/fluid_diagnostics.csv")))
+so = list(csv.DictReader(open(out + "/solid_diagnostics.csv")))
+col = lambda rows, k: [float(r[k]) for r in rows]
+ok = True
+windows = int(re.search(r"\nwindows = (\d+)", open(out + "/run.log").read()).group(1))
+if not len(fl) == len(so) == windows:
+    print("FAIL: %d fluid and %d solid rows for %d windows" % (len(fl), len(so), windows))
+    ok = False
+k, u, p = col(so, "kinetic_energy [J]"), col(so, "strain_energy [J]"), col(so, "potential_energy [J]")
+ext, wi, wz = col(so, "external_work [J]"), col(so, "interface_work [J]"), col(so, "impedance_work [J]")
+scale = max(abs(w) for w in wi)
+bal1 = max(abs(k[i] + u[i] - k[0] - u[0] - ext[i]) for i in range(len(so))) / scale
+bal2 = max(abs(k[i] + u[i] + p[i] - k[0] - u[0] - p[0] - wi[i] - wz[i]) for i in range(len(so))) / scale
+print("solid energy balance: K + U - external work off by %.3g, K + U + P - interface and "
+      "impedance work by %.3g of the largest interface work %.6g J; impedance work at the end "
+      "%.4g J (%.1f %% of the interface work)" % (bal1, bal2, scale, wz[-1], 100 * wz[-1] / wi[-1]))
+ok &= bal1 < 1e-4 and bal2 < 1e-4 and max(wz) <= 1e-12 * scale
+sent_f, sent_s = col(fl, "interface_work [J]"), col(so, "interface_work_at_sent [J]")
+both = max(abs(a - b) for a, b in zip(sent_f, sent_s)) / scale
+print("interface work at the velocity sent, fluid against solid: off by %.3g" % both)
+ok &= both < 1e-9
+fy, mz = float(so[-1]["plate.force_y [N]"]), float(so[-1]["plate.moment_z [N m]"])
+print("plate: force_y %.6g N/m, moment about the origin %.6g N m/m (lever %.9f m)" % (fy, mz, mz / fy))
+ok &= abs(mz - 0.5 * fy) < 1e-6 * abs(fy)
+ok &= max(col(fl, "particles_inside")) == 0
+fluid_log, solid_log = open(out + "/fluid.log").read(), open(out + "/solid.log").read()
+steps = int(re.search(r"performance: (\d+) steps of", fluid_log).group(1))
+substeps = int(re.search(r"performance: (\d+) sub-steps", solid_log).group(1))
+print("rows sum to %d fluid steps (log %d), %d solid sub-steps (log %d)"
+      % (sum(col(fl, "steps")), steps, sum(col(so, "substeps")), substeps))
+ok &= sum(col(fl, "steps")) == steps and sum(col(so, "substeps")) == substeps
+sys.exit(0 if ok else 1)
+PY
+pass "C4 diagnostics: solid energy = work through the interface, both sides' interface work equal, moment = force x lever, counts = logs"
+
+# fsi plot draws them: a PNG that matplotlib reads back, with curves on it: more than
+# 4 % of its pixels not white (the axes, grids and labels of a run whose diagnostics
+# are all zero give 2.3 %, C4's curves about 6 %).
+"$FSI_SOURCE_DIR/launch/fsi" plot c4 >plot.txt 2>&1 || { cat plot.txt; fail "fsi plot failed"; }
+"$PY" - c4/diagnostics.png <<'PY' || fail "fsi plot: no picture in c4/diagnostics.png"
+import sys
+import matplotlib.image as mpimg
+img = mpimg.imread(sys.argv[1])
+ink = (img[:, :, :3].min(axis=2) < 0.9).mean()
+print("diagnostics.png: %d x %d pixels, %.1f %% not white" % (img.shape[1], img.shape[0], 100 * ink))
+sys.exit(0 if img.shape[0] > 200 and ink > 0.04 else 1)
+PY
+pass "fsi plot wrote c4/diagnostics.png"

@@ -150,7 +150,9 @@ awk '$3 == "FSI_FLUID_LOAD" && $11 > 0 {found = 1} END {exit !found}' \
 expect_reproduced fsi fluid
 expect_reproduced fsi solid
 expect_detected fsi fluid fluid_load fluid.viscosity=2e-3
-expect_detected fsi solid solid_state solid.youngs_modulus=1.1e6
+# The solid's first message after its first changed window is that window's done_t,
+# which carries its step and largest speed (docs/protocol.md, done_t's stats).
+expect_detected fsi solid done solid.youngs_modulus=1.1e6
 
 # 4. Bad input: status 2, a message, and no output folder.
 expect_bad() {   # expect_bad NAME EXPECTED_TEXT ARGS...

@@ -57,8 +57,18 @@ print("S2 %s T/dx = 10: period %.7f s (%+.2f %%), amplitude %.5f m (%+.2f %%), %
       "energy drift %+.4f %%" % (sys.argv[1], period, 100 * (period / ref_t - 1), amplitude,
                                  100 * (amplitude / ref_a - 1), cycles, 100 * drift))
 open(sys.argv[1] + "/period.txt", "w").write("%.10g\n" % period)
+# The diagnostics (docs/output.md): kinetic + strain energy in every window within 1 % of
+# the initial (no damping, no loads: the same bound as the end's), the last row the
+# energies the log gives (its 6 digits).
+import csv
+rows = list(csv.DictReader(open(sys.argv[1] + "/solid_diagnostics.csv")))
+energy = [float(r["kinetic_energy [J]"]) + float(r["strain_energy [J]"]) for r in rows]
+worst = max(abs(v / e0 - 1) for v in energy)
+print("S2 %s diagnostics: %d rows, kinetic + strain within %.4f %% of the initial in every "
+      "window" % (sys.argv[1], len(rows), 100 * worst))
 ok = cycles >= 1 and abs(period / ref_t - 1) < float(sys.argv[3]) \
-    and abs(amplitude / ref_a - 1) < float(sys.argv[4]) and abs(drift) < 0.01
+    and abs(amplitude / ref_a - 1) < float(sys.argv[4]) and abs(drift) < 0.01 \
+    and worst < 0.01 and abs(energy[-1] / (k + s) - 1) < 1e-5
 sys.exit(0 if ok else 1)
 PY
     fail "S2 $name: period, amplitude or energy"

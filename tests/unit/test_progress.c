@@ -1,7 +1,9 @@
 /* The progress line's durations (coupler/progress.h): never negative, never an
  * overflowed number; "--:--:--" when unknown or beyond a thousand hours. The issue:
- * a run at t = 1e-300 s of 0.5 s printed "ETA -2562047788015215:-30:-8". */
+ * a run at t = 1e-300 s of 0.5 s printed "ETA -2562047788015215:-30:-8". And the
+ * coupler's detail (the window, steps and speeds) printed in its place. */
 #include <math.h>
+#include <stdio.h>
 #include <string.h>
 
 #include "progress.h"
@@ -54,6 +56,20 @@ int main(void)
             CHECK(strncmp(eta, "ETA 0:00:01", 11) == 0, "half-way ETA: '%s'", line);
     }
     CHECK(lines == 2, "%d progress lines, expected 2", lines);
+    fclose(f);
+
+    /* The coupler's detail (window, steps, speeds) sits between the rate and the time. */
+    f = tmpfile();
+    CHECK(f != NULL, "tmpfile");
+    if (!f)
+        return unit_check_report("test_progress");
+    fsi_progress_init(&p, f, 0.0, 0.5);
+    snprintf(p.detail, sizeof p.detail, "window 1e-04 s | max speed fluid 2 m/s");
+    fsi_progress_update(&p, 0.25, 2, 1);
+    rewind(f);
+    const char *got = fgets(line, sizeof line, f);
+    CHECK(got && strstr(line, "windows/s | window 1e-04 s | max speed fluid 2 m/s | elapsed "),
+          "detail not in its place: '%s'", got ? line : "");
     fclose(f);
     return unit_check_report("test_progress");
 }
