@@ -1,3 +1,4 @@
+#include "units.h"
 #include "fluid_diagnostics.h"
 
 #include <math.h>
@@ -45,8 +46,8 @@ double fluid_max_speed(const fluid_particles *p)
 
 /* The columns after "time" (docs/output.md lists them with their meaning). */
 static char *const columns[] = {
-    "window", "dt [s]", "steps", "step [s]", "kinetic_energy [J]", "potential_energy [J]",
-    "compression_energy [J]", "wall_work [J]", "interface_work [J]", "boundary_work [J]",
+    "window", "dt [s]", "steps", "step [s]", "kinetic_energy [" FSI_UNIT_ENERGY "]", "potential_energy [" FSI_UNIT_ENERGY "]",
+    "compression_energy [" FSI_UNIT_ENERGY "]", "wall_work [" FSI_UNIT_ENERGY "]", "interface_work [" FSI_UNIT_ENERGY "]", "boundary_work [" FSI_UNIT_ENERGY "]",
     "particles_inside", "max_speed [m/s]",
 };
 enum { N_COLUMNS = sizeof columns / sizeof columns[0] };

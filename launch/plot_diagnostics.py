@@ -14,15 +14,30 @@ import sys
 USAGE = "usage: fsi plot OUT"
 
 
+UNITS = {}    # column name -> unit, from the files' "# units:" lines
+
+
 def read(path):
-    """Columns of a diagnostics CSV as lists of floats, by header name."""
+    """Columns of a diagnostics CSV as lists of floats, by header name; the units of the
+    second line ("# units: s,...") go to UNITS."""
     with open(path) as f:
-        rows = list(csv.reader(f))
-    if len(rows) < 2:
+        lines = f.read().splitlines()
+    if not lines:
         return None
-    names = rows[0]
-    return {name: [float(r[k]) for r in rows[1:] if len(r) == len(names)]
+    names = lines[0].split(",")
+    units = [l for l in lines[1:] if l.startswith("# units:")]
+    if units:
+        UNITS.update(zip(names, units[0][len("# units:"):].strip().split(",")))
+    rows = list(csv.reader(l for l in lines[1:] if not l.startswith("#")))
+    if not rows:
+        return None
+    return {name: [float(r[k]) for r in rows if len(r) == len(names)]
             for k, name in enumerate(names)}
+
+
+def unit(name, fallback):
+    """The unit a file declared for column name."""
+    return UNITS.get(name, fallback)
 
 
 def energy_panel(ax, data):
@@ -30,15 +45,15 @@ def energy_panel(ax, data):
     and the fluid's compression energy at rest is far larger than what moves."""
     for who, d in data.items():
         t = d["time"]
-        for key, label in (("kinetic_energy [J]", "kinetic"),
-                           ("compression_energy [J]", "compression"),
-                           ("strain_energy [J]", "strain"),
-                           ("potential_energy [J]", "potential")):
+        for key, label in (("kinetic_energy", "kinetic"),
+                           ("compression_energy", "compression"),
+                           ("strain_energy", "strain"),
+                           ("potential_energy", "potential")):
             e = d.get(key)
             if e and any(v != e[0] for v in e):
                 ax.plot(t, [v - e[0] for v in e], "--" if label == "potential" else "-",
                         label="%s %s" % (who, label))
-    ax.set_ylabel("energy - initial [J]")
+    ax.set_ylabel("energy - initial [%s]" % unit("kinetic_energy", "J"))
     ax.set_title("energy changes from the first window")
 
 
@@ -48,19 +63,19 @@ def work_panel(ax, data):
     drawn = False
     for who, d in data.items():
         t = d["time"]
-        for key, label in (("interface_work [J]", "interface work"),
-                           ("boundary_work [J]", "work on the moving boundary"),
-                           ("interface_work_at_sent [J]", "interface work at the velocity sent"),
-                           ("impedance_work [J]", "impedance work"),
-                           ("wall_work [J]", "moving walls' work")):
+        for key, label in (("interface_work", "interface work"),
+                           ("boundary_work", "work on the moving boundary"),
+                           ("interface_work_at_sent", "interface work at the velocity sent"),
+                           ("impedance_work", "impedance work"),
+                           ("wall_work", "moving walls' work")):
             if key in d and any(d[key]):
                 ax.plot(t, d[key], label="%s %s" % (who, label))
                 drawn = True
-        if "strain_energy [J]" in d and "interface_work [J]" in d and any(d["interface_work [J]"]):
-            e = [k + u + p for k, u, p in zip(d["kinetic_energy [J]"], d["strain_energy [J]"],
-                                              d["potential_energy [J]"])]
+        if "strain_energy" in d and "interface_work" in d and any(d["interface_work"]):
+            e = [k + u + p for k, u, p in zip(d["kinetic_energy"], d["strain_energy"],
+                                              d["potential_energy"])]
             ax.plot(t, [v - e[0] for v in e], "k:", label="%s energy change (K + U + P)" % who)
-    ax.set_ylabel("work [J]")
+    ax.set_ylabel("work [%s]" % unit("interface_work", "J"))
     ax.set_title("work through the interface" if drawn else "work through the interface (none)")
 
 
@@ -71,13 +86,13 @@ def load_panels(ax_force, ax_moment, data):
         t = d["time"]
         for key in d:
             if ".force_" in key and any(d[key]):
-                ax_force.plot(t, d[key], label=key.replace(" [N]", ""))
+                ax_force.plot(t, d[key], label=key)
                 drawn = True
             if ".moment_" in key and any(d[key]):
-                ax_moment.plot(t, d[key], label=key.replace(" [N m]", ""))
-    ax_force.set_ylabel("force [N]")
+                ax_moment.plot(t, d[key], label=key)
+    ax_force.set_ylabel("force [%s]" % next((u for k, u in UNITS.items() if ".force_" in k), "N"))
     ax_force.set_title("fluid force on each solid block" if drawn else "fluid force (no solid loaded)")
-    ax_moment.set_ylabel("moment [N m]")
+    ax_moment.set_ylabel("moment [%s]" % next((u for k, u in UNITS.items() if ".moment_" in k), "N m"))
     ax_moment.set_title("fluid moment on each block, about the origin")
 
 
@@ -94,12 +109,12 @@ def step_panel(ax, data):
     window_drawn = positive = False
     for who, d in data.items():
         t = d["time"][1:]   # window 0 has length zero
-        if not window_drawn and d.get("dt [s]"):
-            ax.plot(t, d["dt [s]"][1:], "k-", lw=1, label="coupling window")
+        if not window_drawn and d.get("dt"):
+            ax.plot(t, d["dt"][1:], "k-", lw=1, label="coupling window")
             window_drawn = True
-        if d.get("step [s]"):
-            ax.plot(t, d["step [s]"][1:], label="%s step" % who)
-        positive |= any(v > 0 for v in d.get("dt [s]", []) + d.get("step [s]", []))
+        if d.get("step"):
+            ax.plot(t, d["step"][1:], label="%s step" % who)
+        positive |= any(v > 0 for v in d.get("dt", []) + d.get("step", []))
     if positive:
         ax.set_yscale("log")
     ax.set_ylabel("step [s]")

@@ -1,3 +1,4 @@
+#include "units.h"
 #include "solid_diagnostics.h"
 
 #include <stdio.h>
@@ -9,9 +10,9 @@
 
 /* The columns before the blocks' (docs/output.md lists them with their meaning). */
 static const char *const fixed_columns[] = {
-    "window", "dt [s]", "substeps", "step [s]", "kinetic_energy [J]", "strain_energy [J]",
-    "potential_energy [J]", "external_work [J]", "interface_work [J]",
-    "interface_work_at_sent [J]", "impedance_work [J]", "max_speed [m/s]",
+    "window", "dt [s]", "substeps", "step [s]", "kinetic_energy [" FSI_UNIT_ENERGY "]", "strain_energy [" FSI_UNIT_ENERGY "]",
+    "potential_energy [" FSI_UNIT_ENERGY "]", "external_work [" FSI_UNIT_ENERGY "]", "interface_work [" FSI_UNIT_ENERGY "]",
+    "interface_work_at_sent [" FSI_UNIT_ENERGY "]", "impedance_work [" FSI_UNIT_ENERGY "]", "max_speed [m/s]",
 };
 enum { N_FIXED = sizeof fixed_columns / sizeof fixed_columns[0] };
 
@@ -48,10 +49,10 @@ static int column_names(const solid_diagnostics *d, const solid_geometry *g, cha
             const int k = N_FIXED + b * PER_BLOCK + c;
             char *name = *text + (size_t)k * 96;
             if (c < FSI_DIM)
-                snprintf(name, 96, "%.60s.force_%c [N]", block_name(g->blocks[b].section),
+                snprintf(name, 96, "%.60s.force_%c [" FSI_UNIT_FORCE "]", block_name(g->blocks[b].section),
                          axis[c]);
             else
-                snprintf(name, 96, "%.60s.moment_%c [N m]", block_name(g->blocks[b].section),
+                snprintf(name, 96, "%.60s.moment_%c [" FSI_UNIT_MOMENT "]", block_name(g->blocks[b].section),
                          FSI_DIM == 2 ? 'z' : axis[c - FSI_DIM]);
             names[k] = name;
         }

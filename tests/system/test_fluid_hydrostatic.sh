@@ -35,15 +35,15 @@ pass "F0: bottom pressure within 1 % of rho0 g H, speed below 1 % of sqrt(g H), 
 # per window, the last at t = 2 s.
 "$PY" - f0/fluid_diagnostics.csv f0/fluid.log <<'PY' || fail "F0 diagnostics"
 import csv, re, sys
-rows = list(csv.DictReader(open(sys.argv[1])))
+rows = list(csv.DictReader(l for l in open(sys.argv[1]) if not l.startswith("#")))
 c0 = float(re.search(r"c0 = (\S+) m/s", open(sys.argv[2]).read()).group(1))
 want_c = 1000 * 9.81 ** 2 * 1.0 * 0.5 ** 3 / (6 * c0 ** 2)
-comp = float(rows[-1]["compression_energy [J]"])
+comp = float(rows[-1]["compression_energy"])
 print("F0 compression energy %.6g J/m at t = 2 s, %+.2f %% of rho0 g^2 W H^3 / (6 c0^2) = %.6g "
       "J/m (c0 = %g m/s)" % (comp, 100 * (comp / want_c - 1), want_c, c0))
 want = 1000 * 9.81 * 1.0 * 0.5 ** 2 / 2
-pot = [float(r["potential_energy [J]"]) for r in rows]
-kin = [float(r["kinetic_energy [J]"]) for r in rows]
+pot = [float(r["potential_energy"]) for r in rows]
+kin = [float(r["kinetic_energy"]) for r in rows]
 worst = max(abs(p / want - 1) for p in pot)
 print("F0 diagnostics: %d rows, potential energy %.6g J/m (%+.3f %% of rho0 g W H^2 / 2, worst "
       "%.3f %%), largest kinetic energy %.3g J/m" % (len(rows), pot[-1],

@@ -61,8 +61,8 @@ open(sys.argv[1] + "/period.txt", "w").write("%.10g\n" % period)
 # the initial (no damping, no loads: the same bound as the end's), the last row the
 # energies the log gives (its 6 digits).
 import csv
-rows = list(csv.DictReader(open(sys.argv[1] + "/solid_diagnostics.csv")))
-energy = [float(r["kinetic_energy [J]"]) + float(r["strain_energy [J]"]) for r in rows]
+rows = list(csv.DictReader(l for l in open(sys.argv[1] + "/solid_diagnostics.csv") if not l.startswith("#")))
+energy = [float(r["kinetic_energy"]) + float(r["strain_energy"]) for r in rows]
 worst = max(abs(v / e0 - 1) for v in energy)
 print("S2 %s diagnostics: %d rows, kinetic + strain within %.4f %% of the initial in every "
       "window" % (sys.argv[1], len(rows), 100 * worst))
