@@ -71,6 +71,15 @@ output_readable out fluid solid || fail "frame 0 does not read back"
   || fail "particles not where the shapes put them"
 pass "frame 0 of both participants: $(/usr/bin/python3 "$FSI_SOURCE_DIR/tests/system/shapes_frame0_check.py" out)"
 
+# Every fluid and solid solver builds its particles and writes frame 0 alone.
+for pair in wcsph:pseudo_spring isph:tlsph; do
+  "$FSI_RUN" shapes.ini --check --write-initial --out "out_${pair%:*}" \
+    --set "fluid.solver=${pair%:*}" --set "solid.solver=${pair#*:}" >"$pair.txt" 2>&1 \
+    || { cat "$pair.txt"; fail "$pair: --write-initial failed"; }
+  output_readable "out_${pair%:*}" fluid solid || fail "$pair: frame 0 does not read back"
+done
+pass "frame 0 with wcsph + pseudo_spring and isph + tlsph"
+
 # --write-initial without --check is refused
 set +e
 "$FSI_RUN" shapes.ini --write-initial --out out_alone >alone.txt 2>&1
