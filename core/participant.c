@@ -106,6 +106,10 @@ struct fsi_participant {
     char abort_culprit[64];
     char abort_reason[512];
 
+    /* FSI_WRITE_INITIAL (fsi run --check --write-initial): alone, without a bus, one
+     * window 0 of zero length that writes frame 0, then the end. */
+    int initial_only;
+
     fsi_timers lib_timers;    /* time spent waiting on the other processes */
     int t_wait;
 
@@ -417,6 +421,10 @@ fsi_participant *fsi_open(const char *name, const char *role, const char *case_p
         free(p);
         return NULL;
     }
+    const char *initial = getenv("FSI_WRITE_INITIAL");
+    p->initial_only = initial && strcmp(initial, "1") == 0;
+    if (p->initial_only)
+        return p;
     p->bus = fsi_bus_open(p->env.lcm_url, p->name, p->env.run_id, on_message, p);
     if (!p->bus) {
         fsi_case_free(p->case_file);
@@ -491,6 +499,14 @@ int fsi_ongoing(fsi_participant *p)
         fsi_abort(p, "cannot write its log (stderr, %s/%s.log under fsi run): %s",
                   fsi_output_dir(p), p->name, strerror(fsi_log_write_error()));
         return 0;
+    }
+    if (p->initial_only) {
+        /* Window 0 as the coupler grants it (coupler_main.c): zero length, probes and
+         * frame 0; the run ends after it. */
+        p->finished = p->window >= 0;
+        p->window = 0;
+        p->flags = FSI_STEP_PROBE;
+        return !p->finished;
     }
     if (!p->registered) {
         if (p->restarting && apply_restart(p) != 0)
@@ -965,6 +981,10 @@ void fsi_set_progress(fsi_participant *p, double step, double max_speed)
 
 int fsi_advance(fsi_participant *p, double dt_next_max)
 {
+    if (p->initial_only) {
+        p->window_complete = 1;
+        return 0;
+    }
     test_stall_switch(p);
     test_slow_switch(p);
     char *names[] = {"step", "max_speed"};
@@ -988,6 +1008,8 @@ void fsi_abort(fsi_participant *p, const char *fmt, ...)
     vsnprintf(reason, sizeof reason, fmt, ap);
     va_end(ap);
     fsi_error("%s", reason);
+    if (!p->bus)
+        return;
     fsi_abort_t a = {0};
     a.header.window = p->window;
     a.header.iteration = p->iteration;
@@ -1042,7 +1064,9 @@ static int collect_stats(fsi_participant *p, const fsi_timers *timers, char **na
 int fsi_close(fsi_participant *p, const fsi_timers *timers)
 {
     int status = FSI_EXIT_OK;
-    if (p->finished) {
+    if (p->initial_only) {
+        status = p->finished ? FSI_EXIT_OK : FSI_EXIT_RUN_FAILURE;
+    } else if (p->finished) {
         char *names[2 * FSI_TIMERS_MAX + 16];
         double values[2 * FSI_TIMERS_MAX + 16];
         int n = collect_stats(p, timers, names, values, 2 * FSI_TIMERS_MAX + 16);
@@ -1054,7 +1078,8 @@ int fsi_close(fsi_participant *p, const fsi_timers *timers)
     } else {
         status = FSI_EXIT_RUN_FAILURE;
     }
-    fsi_bus_close(p->bus);
+    if (p->bus)
+        fsi_bus_close(p->bus);
     fsi_case_free(p->case_file);
     free_slot(&p->other);
     free_slot(&p->pending);

@@ -15,7 +15,9 @@
  *
  * The run is coordinated through the environment `fsi run` sets for every process:
  * FSI_PARTICIPANT (name), FSI_CASE (resolved case file), FSI_OUT (output folder),
- * FSI_RUN_ID and FSI_LCM_URL.
+ * FSI_RUN_ID and FSI_LCM_URL. With FSI_WRITE_INITIAL=1 (fsi run --check
+ * --write-initial) the participant runs alone: no bus, one window 0 of zero length
+ * (probes, frame 0), then fsi_ongoing returns 0; fsi_coupled is 0.
  *
  * Failure: when the run is aborted (another process failed) or the coupler falls
  * silent for [run] watchdog_timeout, the library prints why and exits the process

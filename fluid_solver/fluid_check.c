@@ -19,11 +19,15 @@ static void check_box_sizes(fsi_case_checker *k, const fluid_geometry *g)
     const double dx = g->spacing;
     for (int b = 0; b < g->n_boxes; b++) {
         const fluid_box *box = &g->boxes[b];
+        if (fsi_shape_check(k, &box->shape, box->section, dx) > 0 ||
+            box->shape.kind != FSI_SHAPE_BOX)
+            continue;
+        const double *min = box->shape.min, *max = box->shape.max;
         for (int d = 0; d < FSI_DIM; d++) {
-            double size = box->max[d] - box->min[d], n = fluid_box_spacings(box, dx, d);
+            double size = max[d] - min[d], n = fluid_box_spacings(box, dx, d);
             if (size <= 0) {
                 fsi_case_problem(k, box->section, "max", "must exceed min along %c (min %.9g m, "
-                        "max %.9g m)", axis_name[d], box->min[d], box->max[d]);
+                        "max %.9g m)", axis_name[d], min[d], max[d]);
             } else if (n < 1.0 - FLUID_GEOMETRY_TOL) {
                 fsi_case_problem(k, box->section, "max",
                                  "the box is %.6g m thick along %c, thinner "
@@ -36,7 +40,7 @@ static void check_box_sizes(fsi_case_checker *k, const fluid_geometry *g)
                     "the box is %.6g spacings long along %c; the "
                     "lattice needs a whole number: use max = %.9g or %.9g along %c, or "
                     "spacing = %.9g or %.9g",
-                    n, axis_name[d], box->min[d] + lo * dx, box->min[d] + hi * dx, axis_name[d],
+                    n, axis_name[d], min[d] + lo * dx, min[d] + hi * dx, axis_name[d],
                     size / lo, size / hi);
             }
         }
@@ -50,12 +54,14 @@ static void check_overlaps(fsi_case_checker *k, const fluid_geometry *g)
     for (int b = 0; b < g->n_boxes; b++)
         for (int a = 0; a < b; a++) {
             const fluid_box *p = &g->boxes[a], *q = &g->boxes[b];
-            if (fluid_boxes_overlap(p, q) <= FLUID_GEOMETRY_TOL * g->spacing)
+            if (!fluid_boxes_overlap(p, q, g->spacing))
                 continue;
-            fsi_case_problem(k, q->section, NULL, "overlaps [%s] (%s): %s; let boxes touch, not "
+            fsi_case_problem(k, q->section, NULL, "overlaps [%s] (%s): %s; let %s touch, not "
                     "overlap", p->section, fsi_case_where(k->c, p->section, NULL),
                     p->is_wall != q->is_wall ? "water inside a wall"
-                                             : "particles would be created twice");
+                                             : "particles would be created twice",
+                    fsi_shape_is_plain_box(&p->shape) && fsi_shape_is_plain_box(&q->shape)
+                        ? "boxes" : "shapes");
         }
 }
 
@@ -176,7 +182,8 @@ static void check_periodic(fsi_case_checker *k, const fluid_geometry *g, const c
         for (int b = 0; b < g->n_boxes; b++) {
             const fluid_box *box = &g->boxes[b];
             const double tol = FLUID_GEOMETRY_TOL * dx;
-            if (box->min[d] < per.lo[d] - tol || box->max[d] > per.lo[d] + per.length[d] + tol)
+            if (box->shape.lo[d] < per.lo[d] - tol ||
+                box->shape.hi[d] > per.lo[d] + per.length[d] + tol)
                 fsi_case_problem(k, box->section, "min", "reaches outside the period box "
                                  "along %c (%.9g .. %.9g m): its particles would overlap "
                                  "their own images", axis_name[d], per.lo[d],

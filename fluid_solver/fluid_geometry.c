@@ -8,7 +8,6 @@
 #include <string.h>
 
 #include "case_check.h"
-#include "lattice_box.h"
 
 static void read_vector(const fsi_case *c, const char *section, const char *key, double *out)
 {
@@ -26,10 +25,7 @@ static void read_box(fluid_box *b, const fsi_case *c, const char *section, doubl
     b->free_slip = is_wall && fsi_case_get_bool(c, section, "free_slip", 0);
     if (is_wall)
         fluid_motion_read(&b->motion, c, section);
-    read_vector(c, section, "min", b->min);
-    read_vector(c, section, "max", b->max);
-    for (int d = 0; d < FSI_DIM; d++)
-        b->count[d] = fsi_lattice_count(b->min[d], b->max[d], spacing);
+    fsi_shape_read(&b->shape, c, section, spacing);
 }
 
 /* After the boxes: 'follow' names one of the walls. */
@@ -99,30 +95,30 @@ void fluid_geometry_free(fluid_geometry *g)
 
 double fluid_box_spacings(const fluid_box *b, double spacing, int axis)
 {
-    return (b->max[axis] - b->min[axis]) / spacing;
+    return (b->shape.max[axis] - b->shape.min[axis]) / spacing;
 }
 
-static double box_points(const fluid_box *b)
+double fluid_box_points(const fluid_box *b)
 {
-    return fsi_lattice_points(b->count);
+    return fsi_shape_points(&b->shape);
 }
 
 double fluid_geometry_lattice_size(const fluid_geometry *g)
 {
     double n = 0.0;
     for (int b = 0; b < g->n_boxes; b++)
-        n += box_points(&g->boxes[b]);
+        n += fluid_box_points(&g->boxes[b]);
     return n;
 }
 
-double fluid_boxes_overlap(const fluid_box *a, const fluid_box *b)
+int fluid_boxes_overlap(const fluid_box *a, const fluid_box *b, double spacing)
 {
-    return fsi_boxes_overlap(a->min, a->max, b->min, b->max);
+    return fsi_shapes_overlap(&a->shape, &b->shape, spacing);
 }
 
 int fluid_box_contains(const fluid_box *b, double spacing, const double *x)
 {
-    return fsi_box_contains(b->min, b->max, FLUID_GEOMETRY_TOL * spacing, x);
+    return fsi_shape_contains(&b->shape, FLUID_GEOMETRY_TOL * spacing, x);
 }
 
 int fluid_geometry_build(const fluid_geometry *g, double density, fluid_particles *p,
@@ -147,9 +143,9 @@ int fluid_geometry_build(const fluid_geometry *g, double density, fluid_particle
     /* Boxes are stored blocks first, so fluid particles come before wall particles. */
     for (int b = 0; b < g->n_boxes; b++) {
         const fluid_box *box = &g->boxes[b];
-        long nb = (long)box_points(box);
-        for (long j = 0; j < nb; j++, i++) {
-            fsi_lattice_point(box->min, box->count, g->spacing, j, p->x + i * FSI_DIM);
+        fsi_shape_walk w;
+        fsi_shape_walk_begin(&w, &box->shape, g->spacing);
+        for (; i < n && fsi_shape_walk_next(&w, p->x + i * FSI_DIM); i++) {
             p->id[i] = i;
             p->volume[i] = volume;
             p->mass[i] = density * volume;

@@ -1,7 +1,9 @@
 /* The fluid's geometry from the case: boxes of water ([fluid.block NAME]) and of fixed
  * wall particles ([fluid.wall NAME]), both filled with the lattice min + (i + 1/2) dx
  * along each axis (n_d = (max_d - min_d) / dx points, a whole number checked by
- * fluid_geometry_check), and probe points. A solid_geometry's counterpart for the
+ * fluid_geometry_check), or turned boxes, discs and polygons filled as core/shape.h
+ * says (a wall's shape is filled with wall particles like a block's with water), and
+ * probe points. A solid_geometry's counterpart for the
  * fluid; the two share nothing but the lattice convention, so that a wall box drawn
  * on the faces of a solid block lines up with it. */
 #ifndef FSI_FLUID_GEOMETRY_H
@@ -13,6 +15,7 @@
 #include "dim.h"
 #include "fluid_motion.h"
 #include "fluid_particles.h"
+#include "shape.h"
 
 /* Relative tolerance (in spacings) of "a whole number of spacings" and of boxes. */
 #define FLUID_GEOMETRY_TOL 1e-6
@@ -22,8 +25,7 @@
 
 typedef struct {
     const char *section;        /* "fluid.block NAME" or "fluid.wall NAME" (the case's) */
-    double min[FSI_DIM], max[FSI_DIM];
-    long count[FSI_DIM];        /* lattice points along each axis */
+    fsi_shape shape;            /* a box (min, max, count) or another shape (core/shape.h) */
     int is_wall, free_slip;
     fluid_motion motion;        /* a wall's prescribed motion (kind NONE: fixed) */
 } fluid_box;
@@ -53,9 +55,11 @@ void fluid_geometry_free(fluid_geometry *g);
 double fluid_box_spacings(const fluid_box *b, double spacing, int axis);
 /* Lattice points of every box, as a double (no overflow). */
 double fluid_geometry_lattice_size(const fluid_geometry *g);
-/* Width of the overlap of two boxes, minimum over axes: > 0 when they share a volume. */
-double fluid_boxes_overlap(const fluid_box *a, const fluid_box *b);
-/* True when x lies in the closed box, within FLUID_GEOMETRY_TOL spacings. */
+/* Particles of one box (its shape's lattice points). */
+double fluid_box_points(const fluid_box *b);
+/* 1 when two boxes share a volume (fsi_shapes_overlap). */
+int fluid_boxes_overlap(const fluid_box *a, const fluid_box *b, double spacing);
+/* True when x lies in the closed shape, within FLUID_GEOMETRY_TOL spacings. */
 int fluid_box_contains(const fluid_box *b, double spacing, const double *x);
 
 /* Creates the particles: fluid particles (FLUID_PARTICLE_FLUID) of every block, then

@@ -3,6 +3,7 @@
 #include "fluid_keys.h"
 
 #include "dim.h"
+#include "shape.h"
 
 #if FSI_DIM == 2
 #define ZERO_VECTOR "0, 0"
@@ -91,11 +92,13 @@ const fsi_key_table fsi_fluid_common_keys = {
     common_keys, (int)(sizeof common_keys / sizeof common_keys[0])};
 
 static const fsi_key_spec block_keys[] = {
-    {"min", FSI_KEY_VECTOR, "m", NULL, 0, 0, 0, NULL,
-     "Lower corner of the box of water filled with particles."},
-    {"max", FSI_KEY_VECTOR, "m", NULL, 0, 0, 0, NULL,
+    {"min", FSI_KEY_VECTOR, "m", "", 0, 0, 0, NULL,
+     "Lower corner of the box of water filled with particles (shape = box: required)."},
+    {"max", FSI_KEY_VECTOR, "m", "", 0, 0, 0, NULL,
      "Upper corner; max - min must be a whole number of spacings along each axis, at "
-     "least one."},
+     "least one (shape = box: required)."},
+    FSI_SHAPE_KEYS("The shape is filled with water; with initial_pressure = hydrostatic "
+                   "the depth is counted from its highest point."),
 };
 
 const fsi_key_table fsi_fluid_block_keys = {
@@ -103,11 +106,18 @@ const fsi_key_table fsi_fluid_block_keys = {
     (int)(sizeof block_keys / sizeof block_keys[0])};
 
 static const fsi_key_spec wall_keys[] = {
-    {"min", FSI_KEY_VECTOR, "m", NULL, 0, 0, 0, NULL,
+    {"min", FSI_KEY_VECTOR, "m", "", 0, 0, 0, NULL,
      "Lower corner of the box of fixed wall (ghost) particles (000 §2.3); make walls 3 to "
-     "4 spacings thick so that the fluid near them has a full support."},
-    {"max", FSI_KEY_VECTOR, "m", NULL, 0, 0, 0, NULL,
-     "Upper corner; max - min must be a whole number of spacings along each axis."},
+     "4 spacings thick so that the fluid near them has a full support (shape = box: "
+     "required)."},
+    {"max", FSI_KEY_VECTOR, "m", "", 0, 0, 0, NULL,
+     "Upper corner; max - min must be a whole number of spacings along each axis (shape = "
+     "box: required)."},
+    FSI_SHAPE_KEYS("The wall is the shape filled with wall particles, as a box wall is: "
+                   "give it 3 to 4 spacings of thickness wherever fluid meets it (a turned "
+                   "box's smaller side, an annulus's radius - inner_radius; a disc or "
+                   "polygon is filled whole, an obstacle). The leak check follows only "
+                   "axis-aligned box walls."),
     {"free_slip", FSI_KEY_BOOL, "-", "false", 0, 0, 0, NULL,
      "false: no-slip, the wall's particles carry the virtual velocity 2 v_wall - v~ of "
      "000 Eqs. 50-51 into the viscous stress; true: free-slip, they carry v~ (no viscous "
@@ -156,8 +166,8 @@ const fsi_key_table fsi_fluid_probe_keys = {
     (int)(sizeof probe_keys / sizeof probe_keys[0])};
 
 const fsi_object_kind fsi_fluid_object_kinds[FSI_FLUID_N_OBJECT_KINDS] = {
-    {"block", "Boxes of fluid at the start.", &fsi_fluid_block_keys, 1},
-    {"wall", "Boxes of fixed wall particles (a tank is several).", &fsi_fluid_wall_keys, 0},
+    {"block", "Boxes (or turned boxes, discs, polygons) of fluid at the start.", &fsi_fluid_block_keys, 1},
+    {"wall", "Boxes (or turned boxes, discs, polygons) of fixed wall particles (a tank is several).", &fsi_fluid_wall_keys, 0},
     {"probe", "Points where the pressure or the surface elevation goes to probes.csv.",
      &fsi_fluid_probe_keys, 0},
 };

@@ -15,8 +15,8 @@ static void wall_at(const fluid_box *b, double t, double *lo, double *hi)
     double s[FSI_DIM];
     fluid_motion_at(&b->motion, t, s, NULL, NULL);
     for (int d = 0; d < FSI_DIM; d++) {
-        lo[d] = b->min[d] + s[d];
-        hi[d] = b->max[d] + s[d];
+        lo[d] = b->shape.min[d] + s[d];
+        hi[d] = b->shape.max[d] + s[d];
     }
 }
 
@@ -54,6 +54,13 @@ static int update_sides(const fluid_leak *l, const double *lo, const double *hi,
     return crossed;
 }
 
+/* Walls whose sides the check follows: axis-aligned boxes. A turned box, disc or
+ * polygon has no slabs along the axes to be on one side of. */
+static int leak_checked(const fluid_box *b)
+{
+    return b->is_wall && fsi_shape_is_plain_box(&b->shape);
+}
+
 int fluid_leak_init(fluid_leak *l, const fluid_geometry *g, const fsi_periodic *per,
                     double tolerance, const fluid_particles *p, int n, double t)
 {
@@ -63,7 +70,7 @@ int fluid_leak_init(fluid_leak *l, const fluid_geometry *g, const fsi_periodic *
     for (int d = 0; d < FSI_DIM; d++)
         l->periodic[d] = per && per->on[d];
     for (int b = 0; b < g->n_boxes; b++)
-        l->n_walls += g->boxes[b].is_wall != 0;
+        l->n_walls += leak_checked(&g->boxes[b]);
     l->n = n;
     if (l->n_walls == 0)
         return 0;
@@ -76,7 +83,7 @@ int fluid_leak_init(fluid_leak *l, const fluid_geometry *g, const fsi_periodic *
         return -1;
     }
     for (int b = 0, w = 0; b < g->n_boxes; b++)
-        if (g->boxes[b].is_wall)
+        if (leak_checked(&g->boxes[b]))
             l->wall[w++] = b;
     fluid_leak_crossing ignored;
     fluid_leak_check(l, p, t, &ignored);     /* the sides at the start */

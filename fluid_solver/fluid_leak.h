@@ -3,7 +3,8 @@
  * hold the fluid; one it has crossed no longer does, and the water that fell through
  * the floor of F1 at a too low c0 went unnoticed). Which sides of the domain are walled
  * is not guessed: the check follows every fluid particle against every wall box and
- * every axis d that is not periodic.
+ * every axis d that is not periodic. Walls of another shape (turned boxes, discs,
+ * polygons: core/shape.h) have no slabs along the axes and are not followed.
  *
  * A particle is in the wall's shadow along d when its other, non-periodic coordinates
  * lie within the wall's extent (the box moved by its prescribed motion, fluid_motion.h);

@@ -163,19 +163,23 @@ static void hydrostatic_start(fluid_run *s)
     int i = 0;
     for (int b = 0; b < s->geometry.n_boxes; b++) {
         const fluid_box *box = &s->geometry.boxes[b];
-        long count = 1;
-        for (int d = 0; d < FSI_DIM; d++)
-            count *= box->count[d];
+        const long count = (long)fluid_box_points(box);
         if (box->is_wall)
             continue;       /* blocks come first in the particle order */
         /* Highest corner: along each axis the end that gravity points away from. */
-        double top[FSI_DIM];
-        for (int d = 0; d < FSI_DIM; d++)
-            top[d] = g[d] < 0.0 ? box->max[d] : box->min[d];
+        double top[FSI_DIM], up[FSI_DIM];
+        const int plain = fsi_shape_is_plain_box(&box->shape);
+        for (int d = 0; d < FSI_DIM; d++) {
+            top[d] = g[d] < 0.0 ? box->shape.max[d] : box->shape.min[d];
+            up[d] = -g[d] / g_norm;
+        }
+        /* Another shape: the depth below its highest point. */
+        const double height = plain ? 0.0 : fsi_shape_reach(&box->shape, up);
         for (long j = 0; j < count; j++, i++) {
-            double depth = 0.0;
+            double depth = plain ? 0.0 : height;
             for (int d = 0; d < FSI_DIM; d++)
-                depth += (s->p.x[i * FSI_DIM + d] - top[d]) * g[d] / g_norm;
+                depth += plain ? (s->p.x[i * FSI_DIM + d] - top[d]) * g[d] / g_norm
+                               : -s->p.x[i * FSI_DIM + d] * up[d];
             double pressure = s->props.density * g_norm * depth;
             s->p.density[i] = fluid_scheme_density(s->scheme, pressure);
             s->p.mass[i] = s->p.density[i] * s->p.volume[i];

@@ -19,7 +19,7 @@ int fluid_wall_motion_init(fluid_wall_motion *w, const fluid_geometry *g,
         const fluid_box *box = &g->boxes[b];
         if (!box->is_wall || box->motion.kind == FLUID_MOTION_NONE)
             continue;
-        moving += (int)fsi_lattice_points(box->count);
+        moving += (int)fluid_box_points(box);
         if (!first)
             first = &box->motion;
         same = same && fluid_motion_same(first, &box->motion);
@@ -37,7 +37,7 @@ int fluid_wall_motion_init(fluid_wall_motion *w, const fluid_geometry *g,
     /* Particles follow the boxes in order (fluid_geometry_build). */
     for (int b = 0; b < g->n_boxes; b++) {
         const fluid_box *box = &g->boxes[b];
-        const long count = (long)fsi_lattice_points(box->count);
+        const long count = (long)fluid_box_points(box);
         if (!box->is_wall || box->motion.kind == FLUID_MOTION_NONE) {
             i += (int)count;
             continue;

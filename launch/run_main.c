@@ -31,6 +31,7 @@
 #include "solver_registry.h"
 #include "supervisor.h"
 #include "timers.h"
+#include "write_initial.h"
 
 typedef struct {
     const char *case_path;
@@ -38,6 +39,7 @@ typedef struct {
     int log_traffic;
     const char *lcm_url;   /* NULL: private namespace with the default URL */
     int check_only;
+    int write_initial;          /* --write-initial: frame 0 of everyone, no run */
     const char *restart;        /* --restart OUT */
     char checkpoint_set[96];    /* --checkpoint-interval T as run.checkpoint_interval=T */
 } run_options;
@@ -58,6 +60,8 @@ static void usage(FILE *out)
             "  --lcm-url URL     use this LCM network instead of a private namespace\n"
             "  --force           replace the results of an earlier run in DIR\n"
             "  --check           only check the case, run nothing\n"
+            "  --write-initial   with --check: also write frame 0 of every participant\n"
+            "                    to DIR (the particles as built), run nothing\n"
             "  --checkpoint-interval T\n"
             "                    a coupled checkpoint every T of simulated time (at the\n"
             "                    first frame time from each multiple of T on)\n"
@@ -97,6 +101,8 @@ static int parse_options(int argc, char **argv, run_options *o)
             o->lcm_url = v;
         else if (fsi_arg_flag(&a, "--check"))
             o->check_only = 1;
+        else if (fsi_arg_flag(&a, "--write-initial"))
+            o->write_initial = 1;
         else if (fsi_arg_value(&a, "--restart", &v))
             o->restart = v;
         else if (fsi_arg_value(&a, "--checkpoint-interval", &v))
@@ -111,7 +117,7 @@ static int parse_options(int argc, char **argv, run_options *o)
     if (o->restart) {
         /* The run goes on with its own resolved case: nothing about it may change. */
         if (o->case_path || o->common.n_sets > 0 || o->common.out_dir || o->common.force ||
-            o->check_only) {
+            o->check_only || o->write_initial) {
             fprintf(stderr, "fsi run: --restart OUT takes the case, the output folder and "
                             "the checkpoint interval from OUT; give none of CASE, --out, "
                             "--set, --checkpoint-interval, --force or --check with it\n");
@@ -124,6 +130,11 @@ static int parse_options(int argc, char **argv, run_options *o)
     }
     if (!o->case_path) {
         usage(stderr);
+        return -1;
+    }
+    if (o->write_initial && !o->check_only) {
+        fprintf(stderr, "fsi run: --write-initial goes with --check (fsi run CASE --check "
+                        "--write-initial [--out DIR])\n");
         return -1;
     }
     return 0;
@@ -380,7 +391,7 @@ int main(int argc, char **argv)
         fsi_case_free(c);
         return FSI_EXIT_BAD_INPUT;
     }
-    if (o.check_only) {
+    if (o.check_only && !o.write_initial) {
         printf("%s: valid (%d participant%s)\n", o.case_path, n_plan, n_plan == 1 ? "" : "s");
         fsi_case_free(c);
         return FSI_EXIT_OK;
@@ -459,6 +470,18 @@ int main(int argc, char **argv)
     /* Variables of `fsi replay` would make every process replay a recording. */
     unsetenv("FSI_REPLAY_LOG");
     unsetenv("FSI_REPLAY_REPORT");
+    if (o.write_initial) {
+        /* Each participant alone, no coupler and no bus traffic (write_initial.h). */
+        if (fsi_write_initial_frames(plan, n_plan, out_abs) != 0) {
+            append_log(log_path, "\nexit = failure: --write-initial\n");
+            return FSI_EXIT_RUN_FAILURE;
+        }
+        printf("%s: valid (%d participant%s); frame 0 in %s\n", o.case_path, n_plan,
+               n_plan == 1 ? "" : "s", out_abs);
+        return append_log(log_path, "\nexit = ok (--write-initial: frame 0 only)\n") == 0
+                   ? FSI_EXIT_OK
+                   : FSI_EXIT_RUN_FAILURE;
+    }
 
     fsi_supervisor_catch_signals(&interrupted);
 

@@ -54,10 +54,7 @@ int solid_geometry_read(solid_geometry *g, const fsi_case *c, const char *role, 
     for (int i = 0; i < nb; i++) {
         solid_block *b = &g->blocks[i];
         b->section = blocks[i];
-        read_vector(c, b->section, "min", b->min);
-        read_vector(c, b->section, "max", b->max);
-        for (int d = 0; d < FSI_DIM; d++)
-            b->count[d] = fsi_lattice_count(b->min[d], b->max[d], g->spacing);
+        fsi_shape_read(&b->shape, c, b->section, g->spacing);
     }
     g->n_regions = nr;
     for (int i = 0; i < nr; i++) {
@@ -130,17 +127,12 @@ int solid_crack_cuts(const double *p, const double *q, const double *a, const do
 
 double solid_block_spacings(const solid_block *b, double spacing, int axis)
 {
-    return (b->max[axis] - b->min[axis]) / spacing;
+    return (b->shape.max[axis] - b->shape.min[axis]) / spacing;
 }
 
 long solid_block_points(const solid_block *b)
 {
-    return (long)fsi_lattice_points(b->count);
-}
-
-void solid_block_point(const solid_block *b, double spacing, long j, double *x)
-{
-    fsi_lattice_point(b->min, b->count, spacing, j, x);
+    return (long)fsi_shape_points(&b->shape);
 }
 
 int solid_region_contains(const solid_region *r, double spacing, const double *x)
@@ -157,9 +149,9 @@ int solid_geometry_removed(const solid_geometry *g, const double *x)
     return 0;
 }
 
-double solid_blocks_overlap(const solid_block *a, const solid_block *b)
+int solid_blocks_overlap(const solid_block *a, const solid_block *b, double spacing)
 {
-    return fsi_boxes_overlap(a->min, a->max, b->min, b->max);
+    return fsi_shapes_overlap(&a->shape, &b->shape, spacing);
 }
 
 void solid_particles_free(solid_particles *p)
@@ -201,12 +193,8 @@ static int particles_alloc(solid_particles *p, long n)
 double solid_geometry_lattice_size(const solid_geometry *g)
 {
     double n = 0.0;
-    for (int b = 0; b < g->n_blocks; b++) {
-        double nb = 1.0;
-        for (int d = 0; d < FSI_DIM; d++)
-            nb *= (double)g->blocks[b].count[d];
-        n += nb;
-    }
+    for (int b = 0; b < g->n_blocks; b++)
+        n += fsi_shape_points(&g->blocks[b].shape);
     return n;
 }
 
@@ -277,12 +265,11 @@ int solid_geometry_build(const solid_geometry *g, double density, solid_particle
     }
     /* Two passes: count the points that survive removal, then fill. */
     long n = 0;
+    fsi_shape_walk w;
     for (int b = 0; b < g->n_blocks; b++) {
-        long nb = solid_block_points(&g->blocks[b]);
-        for (long j = 0; j < nb; j++) {
-            solid_block_point(&g->blocks[b], g->spacing, j, x);
+        fsi_shape_walk_begin(&w, &g->blocks[b].shape, g->spacing);
+        while (fsi_shape_walk_next(&w, x))
             n += !solid_geometry_removed(g, x);
-        }
     }
     if (n == 0) {
         snprintf(msg, msg_size, "the solid has no particles (every block is empty or removed)");
@@ -297,9 +284,8 @@ int solid_geometry_build(const solid_geometry *g, double density, solid_particle
     double volume = pow(g->spacing, FSI_DIM);
     int i = 0;
     for (int b = 0; b < g->n_blocks; b++) {
-        long nb = solid_block_points(&g->blocks[b]);
-        for (long j = 0; j < nb; j++) {
-            solid_block_point(&g->blocks[b], g->spacing, j, x);
+        fsi_shape_walk_begin(&w, &g->blocks[b].shape, g->spacing);
+        while (fsi_shape_walk_next(&w, x)) {
             if (solid_geometry_removed(g, x))
                 continue;
             p->id[i] = i;

@@ -6,7 +6,8 @@
  * along each axis d, with n_d = (max_d - min_d) / dx (a whole number, checked by
  * solid_geometry_check), so a block of size L holds L / dx points and its points
  * carry exactly its volume (each dx^FSI_DIM). Touching blocks continue each other's
- * lattice when their corners lie on a common grid.
+ * lattice when their corners lie on a common grid. Turned boxes, discs and polygons
+ * are filled as core/shape.h says (fsi_shape_walk).
  *
  * Cracks (2D): a segment; bonds of a bond-based model whose reference segment
  * crosses it are broken from the start (a pre-crack or notch of zero width).
@@ -28,6 +29,7 @@
 
 #include "case_file.h"
 #include "dim.h"
+#include "shape.h"
 #include "solid_particles.h"
 
 /* Relative tolerance (in spacings) of region boxes and of "a whole number of
@@ -43,8 +45,7 @@ typedef enum {
 
 typedef struct {
     const char *section;        /* "solid.block NAME" (owned by the case) */
-    double min[FSI_DIM], max[FSI_DIM];
-    long count[FSI_DIM];        /* lattice points along each axis, >= 0 */
+    fsi_shape shape;            /* a box (min, max, count) or another shape (core/shape.h) */
 } solid_block;
 
 typedef struct {
@@ -89,21 +90,19 @@ void solid_geometry_free(solid_geometry *g);
  * keep their bonds on both sides. A crack that ends on the segment does. */
 int solid_crack_cuts(const double *p, const double *q, const double *a, const double *b);
 
-/* (max - min) / spacing along 'axis': the block's length in spacings, not rounded. */
+/* (max - min) / spacing along 'axis': a box block's length in spacings, not rounded. */
 double solid_block_spacings(const solid_block *b, double spacing, int axis);
-/* Number of lattice points of the block (product of its counts). */
+/* Number of lattice points of the block. */
 long solid_block_points(const solid_block *b);
-/* Position of lattice point j (axis 0 varies fastest) of block b. */
-void solid_block_point(const solid_block *b, double spacing, long j, double *x);
 
 /* True when x lies in the region's closed box, within SOLID_GEOMETRY_TOL spacings. */
 int solid_region_contains(const solid_region *r, double spacing, const double *x);
 /* True when a 'remove' region of g contains x. */
 int solid_geometry_removed(const solid_geometry *g, const double *x);
 
-/* Width of the overlap of two blocks' boxes along each axis, minimum over axes:
- * > 0 when they share a volume, <= 0 when they are apart or only touch. */
-double solid_blocks_overlap(const solid_block *a, const solid_block *b);
+/* 1 when two blocks share a volume, 0 when they are apart or only touch
+ * (fsi_shapes_overlap). */
+int solid_blocks_overlap(const solid_block *a, const solid_block *b, double spacing);
 
 /* Most lattice points the blocks may hold (before removal): particle ids are int32. */
 #define SOLID_MAX_LATTICE 2147483647.0

@@ -29,13 +29,17 @@ static void check_blocks(fsi_case_checker *k, const solid_geometry *g)
     double dx = g->spacing;
     for (int b = 0; b < g->n_blocks; b++) {
         const solid_block *blk = &g->blocks[b];
-        for (int d = 0; d < FSI_DIM; d++) {
+        const double *min = blk->shape.min, *max = blk->shape.max;
+        const int is_box = blk->shape.kind == FSI_SHAPE_BOX;
+        if (fsi_shape_check(k, &blk->shape, blk->section, dx) > 0)
+            continue;
+        for (int d = 0; d < FSI_DIM && is_box; d++) {
             double n = solid_block_spacings(blk, dx, d);
-            double size = blk->max[d] - blk->min[d];
+            double size = max[d] - min[d];
             if (size <= 0) {
                 fsi_case_problem(k, blk->section, "max",
                         "must exceed min along %c (min %.9g m, max %.9g m)", axis_name[d],
-                        blk->min[d], blk->max[d]);
+                        min[d], max[d]);
             } else if (n < 1.0 - SOLID_GEOMETRY_TOL) {
                 fsi_case_problem(k, blk->section, "max",
                         "the block is %.6g m thick along %c, thinner than one spacing "
@@ -46,20 +50,27 @@ static void check_blocks(fsi_case_checker *k, const solid_geometry *g)
                         "the block is %.6g spacings long along %c; the lattice needs a whole "
                         "number: use max = %.9g or %.9g along %c, or spacing = %.9g "
                         "(%.0f points) or %.9g (%.0f points)",
-                        n, axis_name[d], blk->min[d] + lo * dx, blk->min[d] + hi * dx,
+                        n, axis_name[d], min[d] + lo * dx, min[d] + hi * dx,
                         axis_name[d], size / lo, lo, size / hi, hi);
             }
         }
         for (int a = 0; a < b; a++) {
             const solid_block *other = &g->blocks[a];
-            if (solid_blocks_overlap(other, blk) <= SOLID_GEOMETRY_TOL * dx)
+            if (!solid_blocks_overlap(other, blk, dx))
                 continue;
+            if (!fsi_shape_is_plain_box(&other->shape) || !fsi_shape_is_plain_box(&blk->shape)) {
+                fsi_case_problem(k, blk->section, NULL, "overlaps [%s] (%s): points would be "
+                                 "created twice; let blocks touch, not overlap",
+                                 other->section, fsi_case_where(k->c, other->section, NULL));
+                continue;
+            }
+            const double *omin = other->shape.min, *omax = other->shape.max;
             char box[256];
             int len = 0;
             for (int d = 0; d < FSI_DIM && len < (int)sizeof box; d++)
                 len += snprintf(box + len, sizeof box - (size_t)len, "%s%c %.6g..%.6g",
-                                d ? ", " : "", axis_name[d], fmax(other->min[d], blk->min[d]),
-                                fmin(other->max[d], blk->max[d]));
+                                d ? ", " : "", axis_name[d], fmax(omin[d], min[d]),
+                                fmin(omax[d], max[d]));
             fsi_case_problem(k, blk->section, NULL,
                     "overlaps [%s] (%s) in %s: points would be created twice; let blocks "
                     "touch, not overlap", other->section,
@@ -127,10 +138,10 @@ static void count_selections(fsi_case_checker *k, const solid_geometry *g)
         nearest[q] = INFINITY;
     long survivors = 0;
     double x[FSI_DIM];
+    fsi_shape_walk w;
     for (int b = 0; b < g->n_blocks; b++) {
-        long nb = solid_block_points(&g->blocks[b]);
-        for (long j = 0; j < nb; j++) {
-            solid_block_point(&g->blocks[b], g->spacing, j, x);
+        fsi_shape_walk_begin(&w, &g->blocks[b].shape, g->spacing);
+        while (fsi_shape_walk_next(&w, x)) {
             int removed = 0;
             for (int r = 0; r < g->n_regions; r++)
                 if (g->regions[r].action == SOLID_REGION_REMOVE &&
@@ -215,10 +226,10 @@ static int crack_cuts_lattice(const solid_geometry *g, const solid_crack *crack,
     double(*near)[FSI_DIM] = NULL, x[FSI_DIM];
     long n = 0, capacity = 0;
     int cuts = 0;
+    fsi_shape_walk w;
     for (int b = 0; b < g->n_blocks; b++) {
-        long nb = solid_block_points(&g->blocks[b]);
-        for (long j = 0; j < nb; j++) {
-            solid_block_point(&g->blocks[b], dx, j, x);
+        fsi_shape_walk_begin(&w, &g->blocks[b].shape, dx);
+        while (fsi_shape_walk_next(&w, x)) {
             if (distance_to_segment(x, crack->from, crack->to) > reach ||
                 solid_geometry_removed(g, x))
                 continue;

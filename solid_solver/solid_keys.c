@@ -3,6 +3,7 @@
 #include "solid_keys.h"
 
 #include "dim.h"
+#include "shape.h"
 
 #if FSI_DIM == 2
 #define ZERO_VECTOR "0, 0"
@@ -76,11 +77,17 @@ const fsi_key_table fsi_solid_common_keys = {
     common_keys, (int)(sizeof common_keys / sizeof common_keys[0])};
 
 static const fsi_key_spec block_keys[] = {
-    {"min", FSI_KEY_VECTOR, "m", NULL, 0, 0, 0, NULL,
-     "Lower corner of the box the block fills with lattice points."},
-    {"max", FSI_KEY_VECTOR, "m", NULL, 0, 0, 0, NULL,
+    {"min", FSI_KEY_VECTOR, "m", "", 0, 0, 0, NULL,
+     "Lower corner of the box the block fills with lattice points (shape = box: "
+     "required)."},
+    {"max", FSI_KEY_VECTOR, "m", "", 0, 0, 0, NULL,
      "Upper corner of the box; max - min must be a whole number of spacings along each "
-     "axis, at least one."},
+     "axis, at least one (shape = box: required)."},
+    FSI_SHAPE_KEYS("The shape is filled with material; regions (clamps, loads, removal) "
+                   "select its points by their boxes as for any block, and a block of "
+                   "another shape touching a box block joins it where their lattices meet "
+                   "(the same lattice when the box's corners lie on multiples of the "
+                   "spacing)."),
 };
 
 const fsi_key_table fsi_solid_block_keys = {
@@ -143,7 +150,7 @@ const fsi_key_table fsi_solid_crack_keys = {
     crack_keys, (int)(sizeof crack_keys / sizeof crack_keys[0])};
 
 const fsi_object_kind fsi_solid_object_kinds[FSI_SOLID_N_OBJECT_KINDS] = {
-    {"block", "Boxes of material; touching blocks form one body.", &fsi_solid_block_keys, 1},
+    {"block", "Boxes (or turned boxes, discs, polygons) of material; touching blocks form one body.", &fsi_solid_block_keys, 1},
     {"region", "Clamps, loads and removed parts (applied in file order after removal).",
      &fsi_solid_region_keys, 0},
     {"probe", "Particles whose displacement and velocity go to probes.csv.",

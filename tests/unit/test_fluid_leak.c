@@ -35,9 +35,9 @@ static void set_wall(fluid_box *b, const char *section, double x0, double y0, do
     memset(b, 0, sizeof *b);
     b->section = section;
     b->is_wall = 1;
-    b->min[0] = x0, b->min[1] = y0, b->max[0] = x1, b->max[1] = y1;
+    b->shape.min[0] = x0, b->shape.min[1] = y0, b->shape.max[0] = x1, b->shape.max[1] = y1;
     for (int d = 2; d < FSI_DIM; d++)
-        b->min[d] = -1.0, b->max[d] = 1.0;
+        b->shape.min[d] = -1.0, b->shape.max[d] = 1.0;
 }
 
 static void place(int i, double px, double py)

@@ -23,9 +23,9 @@ static void set_box(fluid_box *b, double x0, double x1, double spacing, int is_w
     b->section = is_wall ? "fluid.wall w" : "fluid.block water";
     b->is_wall = is_wall;
     for (int d = 0; d < FSI_DIM; d++) {
-        b->min[d] = d == 0 ? x0 : 0.0;
-        b->max[d] = d == 0 ? x1 : 2.0 * spacing;
-        b->count[d] = (long)llround((b->max[d] - b->min[d]) / spacing);
+        b->shape.min[d] = d == 0 ? x0 : 0.0;
+        b->shape.max[d] = d == 0 ? x1 : 2.0 * spacing;
+        b->shape.count[d] = (long)llround((b->shape.max[d] - b->shape.min[d]) / spacing);
     }
 }
 
@@ -48,7 +48,7 @@ int main(void)
     memcpy(x_case, p.x, (size_t)p.n * FSI_DIM * sizeof *x_case);
     fluid_wall_motion w;
     CHECK(fluid_wall_motion_init(&w, &g, &p, msg, sizeof msg) == 0, "%s", msg);
-    CHECK(w.n_moving == (int)fsi_lattice_points(boxes[1].count) && w.tank == &boxes[1].motion,
+    CHECK(w.n_moving == (int)fsi_lattice_points(boxes[1].shape.count) && w.tank == &boxes[1].motion,
           "moving particles: %d", w.n_moving);
 
     const double omega = 2.0 * PI / T, times[] = {0.0, 0.37, 1.0, 2.9};
