@@ -41,8 +41,9 @@ static inline double krylov_residual(const fsi_csr *a, const double *b, const do
     return krylov_norm(r, a->n_rows);
 }
 
-/* Starts a solve: *res says converged after 0 iterations, and returns ||b||. When b
- * is 0 the solution is x = 0, set here; the caller returns *res at once. */
+/* Starts a solve: *res says converged after 0 iterations, and returns the residual's
+ * scale max(||b||, ||A x0||) (krylov.h). When b is 0 the solution is x = 0, set here,
+ * and 0 is returned; the caller returns *res at once. */
 static inline double krylov_start(const fsi_csr *a, const double *b, double *x, int32_t n,
                                   fsi_krylov_result *res)
 {
