@@ -1,10 +1,10 @@
-#include "units.h"
 #include "fluid_diagnostics.h"
 
 #include <math.h>
 #include <stdio.h>
 
 #include "small_tensor.h"
+#include "units.h"
 
 double fluid_kinetic_energy(const fluid_particles *p)
 {
@@ -46,9 +46,11 @@ double fluid_max_speed(const fluid_particles *p)
 
 /* The columns after "time" (docs/output.md lists them with their meaning). */
 static char *const columns[] = {
-    "window", "dt [s]", "steps", "step [s]", "kinetic_energy [" FSI_UNIT_ENERGY "]", "potential_energy [" FSI_UNIT_ENERGY "]",
-    "compression_energy [" FSI_UNIT_ENERGY "]", "wall_work [" FSI_UNIT_ENERGY "]", "interface_work [" FSI_UNIT_ENERGY "]", "boundary_work [" FSI_UNIT_ENERGY "]",
+#define J "[" FSI_UNIT_ENERGY "]"
+    "window", "dt [s]", "steps", "step [s]", "kinetic_energy " J, "potential_energy " J,
+    "compression_energy " J, "wall_work " J, "interface_work " J, "boundary_work " J,
     "particles_inside", "max_speed [m/s]",
+#undef J
 };
 enum { N_COLUMNS = sizeof columns / sizeof columns[0] };
 
@@ -69,7 +71,7 @@ int fluid_diagnostics_write(fluid_diagnostics *d, double t, const fluid_particle
         w->window, w->dt, (double)w->steps, w->step, fluid_kinetic_energy(p),
         fluid_potential_energy(p, gravity) + w->potential_wrapped,
         fluid_compression_energy(p, s), w->wall_work, w->interface_work, w->boundary_work,
-        w->inside, fluid_max_speed(p),
+        w->inside, w->max_speed,
     };
     return fsi_diagnostics_csv_row(&d->file, t, values, msg, msg_size);
 }

@@ -39,6 +39,8 @@ typedef struct {
                                  * solid sent, sum F . u dt so far [J] */
     double boundary_work;       /* the same over the boundary's own motion [J] */
     int inside;                 /* fluid particles inside the solid */
+    double max_speed;           /* the fastest fluid particle's speed [m/s] (the one
+                                 * the progress line was given) */
 } fluid_window_summary;
 
 typedef struct {

@@ -105,6 +105,7 @@ typedef struct {
     long window_first_step;
     double last_step;
     int inside_last;
+    double max_speed;   /* the fastest fluid particle at the window's end */
     int capacity;       /* particles drho .. grad_p hold */
     int *order;         /* original index (output row) of the particle at each index of
                          * the fixed part; they are sorted by cell now and then */
@@ -813,7 +814,7 @@ static int write_diagnostics(fluid_run *s, double t, int window, double dt)
     const fluid_window_summary w = {window, dt, s->steps - s->window_first_step,
                                     s->last_step, s->wall_work, s->potential_wrapped,
                                     s->coupling.work_at_sent, 0.0 - s->coupling.work_on_fluid,
-                                    s->inside_last};
+                                    s->inside_last, s->max_speed};
     fsi_timer_start(&s->timers, s->t_output);
     const int rc = fluid_diagnostics_write(&s->diagnostics, t, &s->p, s->scheme,
                                            s->props.gravity, &w, s->msg, sizeof s->msg);
@@ -925,7 +926,8 @@ int main(void)
             fluid_scheme_pressure_gradient(s.scheme, &s.p, s.grad_p);
             fluid_probes_set(&s.probes, &s.p, s.grad_p, t0 + dt, part);
         }
-        fsi_set_progress(part, s.last_step, fluid_max_speed(&s.p));
+        s.max_speed = fluid_max_speed(&s.p);    /* for the progress line and the row */
+        fsi_set_progress(part, s.last_step, s.max_speed);
         /* Coupled, the window is the fluid's step: the solid's motion it sees and the
          * loads it returns are then as fresh as the fluid's own state. */
         fsi_advance(part, fsi_coupled(part) && s.stable_dt > 0.0 ? s.stable_dt : DBL_MAX);

@@ -1,18 +1,19 @@
-#include "units.h"
 #include "solid_diagnostics.h"
 
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
-#include "particle_health.h"
 #include "solid_integrate.h"
+#include "units.h"
 
 /* The columns before the blocks' (docs/output.md lists them with their meaning). */
 static const char *const fixed_columns[] = {
-    "window", "dt [s]", "substeps", "step [s]", "kinetic_energy [" FSI_UNIT_ENERGY "]", "strain_energy [" FSI_UNIT_ENERGY "]",
-    "potential_energy [" FSI_UNIT_ENERGY "]", "external_work [" FSI_UNIT_ENERGY "]", "interface_work [" FSI_UNIT_ENERGY "]",
-    "interface_work_at_sent [" FSI_UNIT_ENERGY "]", "impedance_work [" FSI_UNIT_ENERGY "]", "max_speed [m/s]",
+#define J "[" FSI_UNIT_ENERGY "]"
+    "window", "dt [s]", "substeps", "step [s]", "kinetic_energy " J, "strain_energy " J,
+    "potential_energy " J, "external_work " J, "interface_work " J,
+    "interface_work_at_sent " J, "impedance_work " J, "max_speed [m/s]",
+#undef J
 };
 enum { N_FIXED = sizeof fixed_columns / sizeof fixed_columns[0] };
 
@@ -112,14 +113,11 @@ int solid_diagnostics_write(solid_diagnostics *d, double t, const solid_particle
         snprintf(msg, msg_size, "out of memory for a diagnostics row");
         return -1;
     }
-    double speed = 0.0;
-    if (p->n > 0)
-        fsi_fastest(p->v, p->n, &speed);
     const double fixed[N_FIXED] = {
         w->window, w->dt, (double)w->substeps,
         w->substeps > 0 ? w->dt / (double)w->substeps : 0.0, w->kinetic, w->strain,
         solid_potential_energy(p, gravity), w->external_work, w->interface_work,
-        w->interface_work_at_sent, w->impedance_work, speed,
+        w->interface_work_at_sent, w->impedance_work, w->max_speed,
     };
     memcpy(values, fixed, sizeof fixed);
     block_loads(d, p, w->fluid_force);

@@ -31,6 +31,8 @@ typedef struct {
     double interface_work_at_sent;  /* the same at the velocity sent to the fluid [J] */
     double impedance_work;      /* the interface impedance's work so far [J] */
     const double *fluid_force;  /* the fluid's load on every particle [N], n * FSI_DIM */
+    double max_speed;           /* the fastest point's speed [m/s] (the one the
+                                 * progress line was given) */
 } solid_window_summary;
 
 typedef struct {

@@ -98,6 +98,7 @@ typedef struct {
      * sub-steps at the window's start, the energies check_health computed. */
     solid_diagnostics diagnostics;
     int64_t diagnostics_bytes;
+    double max_speed;           /* the fastest point at the window's end */
     long window_first_substep;
     double kinetic, strain;
     char msg[512];
@@ -633,7 +634,8 @@ static int write_diagnostics(solid_run *s, double t, int window, double dt)
 {
     const solid_window_summary w = {window, dt, s->substeps - s->window_first_substep,
                                     s->kinetic, s->strain, s->work, s->fluid_work,
-                                    s->fluid_work_at_sent, s->impedance_work, s->f_fluid};
+                                    s->fluid_work_at_sent, s->impedance_work, s->f_fluid,
+                                    s->max_speed};
     fsi_timer_start(&s->timers, s->t_output);
     const int rc = solid_diagnostics_write(&s->diagnostics, t, &s->p, s->integrator.gravity,
                                            &w, s->msg, sizeof s->msg);
@@ -713,11 +715,11 @@ int main(void)
             break;
         }
         const int frame = fsi_output_frame(part);
-        double speed = 0.0;
+        s.max_speed = 0.0;      /* for the progress line and the diagnostics row */
         if (s.p.n > 0)
-            fsi_fastest(s.p.v, s.p.n, &speed);
+            fsi_fastest(s.p.v, s.p.n, &s.max_speed);
         const long substeps = s.substeps - s.window_first_substep;
-        fsi_set_progress(part, substeps > 0 ? dt / (double)substeps : 0.0, speed);
+        fsi_set_progress(part, substeps > 0 ? dt / (double)substeps : 0.0, s.max_speed);
         fsi_advance(part, DBL_MAX);   /* sub-cycling: the solid never limits the window */
         /* Output only of the state the run goes on from. */
         if (frame >= 0 && fsi_window_complete(part)) {

@@ -20,6 +20,8 @@ static const fsi_h5_field_info fields[] = {
                                  "received."},
     {"mass", FSI_UNIT_MASS, "Particle mass rho0 V0" FSI_PER_THICKNESS
                             "; volume = mass / density."},
+    /* every model writes it (NOSB-PD, pseudo-spring, TLSPH; fsi view draws it) */
+    {"stress", "Pa", "Cauchy stress (row-major; the in-plane block in 2-D)."},
     {"density", "kg/m^3", "The density the solid shows the fluid: current for pseudo-spring "
                           "SPH (004 Eq. 14), the reference one for the total-Lagrangian "
                           "NOSB-PD and TLSPH."},

@@ -533,7 +533,7 @@ int fluid_scheme_describe_fields(fsi_h5_writer *out)
     };
     static const int32_t values[] = {-1, ISPH_INTERIOR, ISPH_NEAR_SURFACE, ISPH_SURFACE,
                                      ISPH_SPLASH};
-    return fsi_h5_describe_fields(out, info, 3) ||
+    return fsi_h5_describe_fields(out, info, (int)(sizeof info / sizeof info[0])) ||
                    fsi_h5_name_flags(out, "surface_class", FSI_H5_FLAG_VALUES, 5, values,
                                      "not_fluid interior near_surface surface splash")
                ? -1

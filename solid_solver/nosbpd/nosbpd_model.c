@@ -323,7 +323,6 @@ int64_t nosbpd_broken_bond_count(const solid_model *m)
 int solid_model_describe_fields(fsi_h5_writer *out)
 {
     static const fsi_h5_field_info info[] = {
-        {"stress", "Pa", "Cauchy stress (row-major; the in-plane block in 2-D)."},
         {"damage", "1", "Volume-weighted fraction of the point's bonds that are broken "
                         "(000 Eq. 49; 0 intact, 1 fully separated)."},
         {"equivalent_plastic_strain", "1", "Accumulated equivalent plastic strain "
@@ -333,7 +332,7 @@ int solid_model_describe_fields(fsi_h5_writer *out)
                                 "singular or its deformation inverted, docs/nosbpd.md)."},
     };
     static const int32_t values[] = {0, 1};
-    return fsi_h5_describe_fields(out, info, 5) ||
+    return fsi_h5_describe_fields(out, info, (int)(sizeof info / sizeof info[0])) ||
                    fsi_h5_name_flags(out, "no_force_state", FSI_H5_FLAG_VALUES, 2, values,
                                      "force_state no_force_state")
                ? -1

@@ -281,7 +281,6 @@ double *pseudo_spring_stress(solid_model *m)
 int solid_model_describe_fields(fsi_h5_writer *out)
 {
     static const fsi_h5_field_info info[] = {
-        {"stress", "Pa", "Cauchy stress (row-major; the in-plane block in 2-D)."},
         {"damage", "1", "Broken links over the links the point had at the start (0 intact, "
                         "1 fully separated)."},
         {"current_density", "kg/m^3", "Current density of the continuity equation "
@@ -290,7 +289,7 @@ int solid_model_describe_fields(fsi_h5_writer *out)
                                            "sqrt(2/3 e_p : e_p)."},
         {"intact_links", "1", "Number of the point's links not broken."},
     };
-    return fsi_h5_describe_fields(out, info, 5);
+    return fsi_h5_describe_fields(out, info, (int)(sizeof info / sizeof info[0]));
 }
 
 double solid_model_smoothing_length(const solid_model *m)

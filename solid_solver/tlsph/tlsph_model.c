@@ -304,10 +304,9 @@ int64_t solid_model_interaction_count(const solid_model *m)
 int solid_model_describe_fields(fsi_h5_writer *out)
 {
     static const fsi_h5_field_info info[] = {
-        {"stress", "Pa", "Cauchy stress (row-major; the in-plane block in 2-D)."},
         {"jacobian", "1", "det F, the ratio of current to reference volume."},
     };
-    return fsi_h5_describe_fields(out, info, 2);
+    return fsi_h5_describe_fields(out, info, (int)(sizeof info / sizeof info[0]));
 }
 
 double solid_model_smoothing_length(const solid_model *m)

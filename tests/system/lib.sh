@@ -12,6 +12,22 @@ cd "$FSI_TEST_TMP"
 fail() { echo "FAIL: $*" >&2; exit 1; }
 pass() { echo "ok: $*"; }
 
+# expect_bad_case NAME PATTERN [fsi run options...]: runs bad.ini (in the current
+# folder) with the options; asserts exit 2, a message matching PATTERN (grep -E) and no
+# output folder out_NAME.
+expect_bad_case() {
+  local name="$1" pattern="$2"
+  shift 2
+  set +e
+  "$FSI_RUN" bad.ini --out "out_$name" "$@" >"$name.txt" 2>&1
+  local status=$?
+  set -e
+  [ "$status" -eq 2 ] || { cat "$name.txt"; fail "$name: exit status $status, expected 2"; }
+  grep -qE -- "$pattern" "$name.txt" || { cat "$name.txt"; fail "$name: message does not match '$pattern'"; }
+  [ ! -e "out_$name" ] || fail "$name: output folder was created"
+  pass "$name: $(head -n 1 "$name.txt")"
+}
+
 # A small deterministic case of the example participants (about 1 s to run):
 #   small_case FILE [end_time]
 small_case() {

@@ -25,10 +25,12 @@ import os
 import sys
 
 from paraview import servermanager
-from paraview.simple import Delete, OpenDataFile, XDMFReader, Xdmf3ReaderT
 from vtkmodules.vtkCommonCore import vtkPoints
 from vtkmodules.vtkCommonDataModel import vtkCompositeDataSet, vtkPolyData
 from vtkmodules.vtkFiltersPoints import vtkSPHInterpolator, vtkWendlandQuinticKernel
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from paraview_three_readers import each_reader, run  # noqa: E402 (after the path)
 
 failures = []
 
@@ -158,16 +160,8 @@ def check_reader(reader, args, named):
 
 def main():
     args = parse_args()
-    reader = OpenDataFile(args.xmf)
-    if reader is None:
-        fail("ParaView cannot open %s" % args.xmf)
-    else:
-        check_reader(reader, args, named=False)
-        Delete(reader)
-    reader = Xdmf3ReaderT(FileName=[args.xmf])
-    check_reader(reader, args, named=False)
-    Delete(reader)
-    check_reader(XDMFReader(FileNames=[args.xmf]), args, named=True)
+    each_reader(args.xmf, lambda reader, legacy: check_reader(reader, args, named=legacy),
+                fail)
     if failures:
         print("paraview_check_run: %d check(s) failed" % len(failures), file=sys.stderr)
         return 1
@@ -177,9 +171,4 @@ def main():
 
 
 if __name__ == "__main__":
-    try:
-        code = main()
-    except Exception as e:  # pvbatch may not turn an exception into an exit code
-        print("paraview_check_run: FAIL: %s: %s" % (type(e).__name__, e), file=sys.stderr)
-        code = 1
-    sys.exit(code)
+    run("paraview_check_run", main)

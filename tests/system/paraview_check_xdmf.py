@@ -14,10 +14,13 @@ the Points representation shows nothing and Threshold returns nothing). Prints o
 mismatch and exits 1 if there was any, 0 otherwise.
 """
 import argparse
+import os
 import sys
 
 from paraview import servermanager
-from paraview.simple import Delete, OpenDataFile, XDMFReader, Xdmf3ReaderT
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from paraview_three_readers import each_reader, run  # noqa: E402 (after the path)
 
 COMPONENTS = {"scalar": lambda d: 1, "vector": lambda d: d, "tensor": lambda d: d * d}
 failures = []
@@ -139,18 +142,7 @@ def check_reader(reader, args, legacy):
 
 def main():
     args = parse_args()
-    reader = OpenDataFile(args.xmf)
-    if reader is None:
-        fail("ParaView cannot open %s" % args.xmf)
-    else:
-        if not reader.GetXMLName().startswith("Xdmf3"):
-            fail("OpenDataFile picked %s, expected an Xdmf3 reader" % reader.GetXMLName())
-        check_reader(reader, args, legacy=False)
-        Delete(reader)
-    reader = Xdmf3ReaderT(FileName=[args.xmf])
-    check_reader(reader, args, legacy=False)
-    Delete(reader)
-    check_reader(XDMFReader(FileNames=[args.xmf]), args, legacy=True)
+    each_reader(args.xmf, lambda reader, legacy: check_reader(reader, args, legacy), fail)
     if failures:
         print("paraview_check_xdmf: %d check(s) failed" % len(failures), file=sys.stderr)
         return 1
@@ -160,9 +152,4 @@ def main():
 
 
 if __name__ == "__main__":
-    try:
-        code = main()
-    except Exception as e:  # pvbatch may not turn an exception into an exit code
-        print("paraview_check_xdmf: FAIL: %s: %s" % (type(e).__name__, e), file=sys.stderr)
-        code = 1
-    sys.exit(code)
+    run("paraview_check_xdmf", main)

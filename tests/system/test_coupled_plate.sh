@@ -154,8 +154,8 @@ pass "C4 at T / dx = 4: stable, sub-cycled, deflection near the elastic answer, 
 #     external force and gravity (external_work), and kinetic + strain + gravity's
 #     potential by the work through the interface, the fluid's loads over the solid's
 #     motion plus the interface impedance's (no prescribed loads, no damping here), to
-#     1e-4 of the largest work: velocity Verlet's energy error at the solid's sub-step
-#     (measured 7.7e-7 at T / dx = 4), far below the terms a wrong sum leaves out (the
+#     1e-5 of the largest work: velocity Verlet's energy error at the solid's sub-step
+#     (measured 7.7e-7 at T / dx = 4; a factor 13 for other machines' round-off), far below the terms a wrong sum leaves out (the
 #     impedance's share, printed, about 6 % of the interface work; gravity's 15 %);
 #   - the impedance only takes energy out (its work never positive);
 #   - the work through the interface from both sides: the fluid's sum of its loads at
@@ -184,7 +184,7 @@ bal2 = max(abs(k[i] + u[i] + p[i] - k[0] - u[0] - p[0] - wi[i] - wz[i]) for i in
 print("solid energy balance: K + U - external work off by %.3g, K + U + P - interface and "
       "impedance work by %.3g of the largest interface work %.6g J; impedance work at the end "
       "%.4g J (%.1f %% of the interface work)" % (bal1, bal2, scale, wz[-1], 100 * wz[-1] / wi[-1]))
-ok &= bal1 < 1e-4 and bal2 < 1e-4 and max(wz) <= 1e-12 * scale
+ok &= bal1 < 1e-5 and bal2 < 1e-5 and max(wz) <= 1e-12 * scale
 sent_f, sent_s = col(fl, "interface_work"), col(so, "interface_work_at_sent")
 both = max(abs(a - b) for a, b in zip(sent_f, sent_s)) / scale
 print("interface work at the velocity sent, fluid against solid: off by %.3g" % both)

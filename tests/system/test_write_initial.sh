@@ -88,23 +88,11 @@ set -e
 [ "$status" -eq 2 ] && [ ! -e out_alone ] || { cat alone.txt; fail "--write-initial alone: exit $status"; }
 
 # Bad shapes: exit 2, file, line and key, no output folder.
-expect_bad() {
-  local name="$1" pattern="$2"
-  shift 2
-  set +e
-  "$FSI_RUN" bad.ini --check --write-initial --out "out_$name" >"$name.txt" 2>&1
-  local status=$?
-  set -e
-  [ "$status" -eq 2 ] || { cat "$name.txt"; fail "$name: exit status $status, expected 2"; }
-  grep -qE -- "$pattern" "$name.txt" || { cat "$name.txt"; fail "$name: message does not match '$pattern'"; }
-  [ ! -e "out_$name" ] || fail "$name: output folder was created"
-  pass "$name: $(head -n 1 "$name.txt")"
-}
 sed 's/^radius = 0.04/radius = 0/' shapes.ini >bad.ini
-expect_bad radius "^bad.ini:[0-9]+: \[solid.block cylinder\] radius: must be > 0"
+expect_bad_case radius "^bad.ini:[0-9]+: \[solid.block cylinder\] radius: must be > 0" --check --write-initial
 sed 's/^shape = disc/shape = blob/' shapes.ini >bad.ini
-expect_bad unknown_shape "^bad.ini:[0-9]+: \[solid.block cylinder\] shape: .*blob"
+expect_bad_case unknown_shape "^bad.ini:[0-9]+: \[solid.block cylinder\] shape: .*blob" --check --write-initial
 sed 's/^angle = 30/angle = 30\nshape = polygon\npoints = 0.2,0.2 0.3,0.2/' shapes.ini >bad.ini
-expect_bad two_corners "^bad.ini:[0-9]+: \[fluid.wall baffle\] points: too few corners"
+expect_bad_case two_corners "^bad.ini:[0-9]+: \[fluid.wall baffle\] points: too few corners" --check --write-initial
 sed 's/^angle = 30/shape = polygon\npoints = 0.2,0.2 0.3,0.3 0.3,0.2 0.2,0.3/' shapes.ini >bad.ini
-expect_bad crossing "^bad.ini:[0-9]+: \[fluid.wall baffle\] points: edge 1 .* crosses edge 3"
+expect_bad_case crossing "^bad.ini:[0-9]+: \[fluid.wall baffle\] points: edge 1 .* crosses edge 3" --check --write-initial

@@ -68,6 +68,17 @@ static void make_state(state *s)
                            .acceleration = s->a, .volume = s->vol, .density = s->rho};
 }
 
+/* An implicit solid with the given acceleration (the case is read at init only), and
+ * the interface state at the window's start. */
+static void start(const char *acceleration, implicit_solid *is, state *s)
+{
+    fsi_case *c = case_with(acceleration);
+    char msg[512];
+    CHECK(implicit_solid_init(is, c, msg, sizeof msg) == 0, "init: %s", msg);
+    fsi_case_free(c);
+    make_state(s);
+}
+
 static void check_motion(const implicit_solid *is, const state *s, double dt)
 {
     double worst = 0.0;
@@ -92,12 +103,10 @@ static void end_state(const state *s, const double *u_out, double dt, double *x_
 
 static void test_motion_and_verdict(void)
 {
-    fsi_case *c = case_with("constant");
     implicit_solid is;
-    char msg[512];
-    CHECK(implicit_solid_init(&is, c, msg, sizeof msg) == 0, "init: %s", msg);
     state s;
-    make_state(&s);
+    start("constant", &is, &s);
+    char msg[512];
     const double dt = 1e-3, dt_prev = 8e-4;
     CHECK(implicit_solid_motion(&is, 0, dt, dt_prev, &s.d, msg, sizeof msg) == 0, "%s", msg);
     double worst = 0.0;
@@ -137,7 +146,6 @@ static void test_motion_and_verdict(void)
               strstr(msg, "fsi_requires_reading_checkpoint"),
           "another particle set in a repeated iteration is refused: %s", msg);
     implicit_solid_free(&is);
-    fsi_case_free(c);
 }
 
 /* Added mass: a structure of mass m_s under a fluid that answers its acceleration a
@@ -148,12 +156,10 @@ static void test_motion_and_verdict(void)
  * iteration multiplies the error by -5 each time. */
 static void test_added_mass(void)
 {
-    fsi_case *c = case_with("iqn_ils");
     implicit_solid is;
-    char msg[512];
-    CHECK(implicit_solid_init(&is, c, msg, sizeof msg) == 0, "init: %s", msg);
     state s;
-    make_state(&s);
+    start("iqn_ils", &is, &s);
+    char msg[512];
     for (int k = 0; k < N * FSI_DIM; k++)
         s.v[k] = s.a[k] = 0.0;
     const double dt = 1e-3, m_s = 1.0, ratio[N] = {5, 2, 8, 0.5, 3, 6};
@@ -187,7 +193,6 @@ static void test_added_mass(void)
     printf("added mass ratios 0.5 to 8: IQN-ILS converged at iteration %d, error %.2g\n",
            converged_at, worst);
     implicit_solid_free(&is);
-    fsi_case_free(c);
 }
 
 /* The motion sent depends on the window's length and the last window's (the
@@ -198,12 +203,10 @@ static void test_added_mass(void)
  * short). */
 static void test_history_and_window_lengths(void)
 {
-    fsi_case *c = case_with("iqn_ils");
     implicit_solid is;
-    char msg[512];
-    CHECK(implicit_solid_init(&is, c, msg, sizeof msg) == 0, "init: %s", msg);
     state s;
-    make_state(&s);
+    start("iqn_ils", &is, &s);
+    char msg[512];
     const double dts[][2] = {{2e-4, 0}, {2e-4, 2e-4}, {2e-4, 2e-4}, {1e-4, 2e-4},
                              {2e-4, 1e-4}, {2e-4, 2e-4}, {2e-4, 2e-4}};
     const int expected[] = {0, 2, 0, 2, 2, 2, 0};
@@ -220,7 +223,6 @@ static void test_history_and_window_lengths(void)
         CHECK(implicit_solid_window_end(&is, &end, msg, sizeof msg) == 0, "%s", msg);
     }
     implicit_solid_free(&is);
-    fsi_case_free(c);
 }
 
 int main(void)
