@@ -9,9 +9,10 @@
  *      (Eqs. 18-19), the loads on the solid from the same terms;
  *   4. shifting with the Taylor correction of u and p (Eqs. 20-32).
  * Between steps the pressure is the last projection's; rates at a state the scheme did
- * not leave (the start, a solid that moved between windows, a caller's own stepping)
+ * not leave (the start, a caller's own stepping: fluid positions or pressures changed)
  * first solves the projection of the current velocity over the last step (or the
  * stable one), so that rates always return the acceleration of a consistent pressure.
+ * A solid or wall that moved alone keeps the last projection's pressure.
  * The fluid's density is rho0 throughout: there is no equation of state. */
 #include <math.h>
 #include <stdio.h>
@@ -57,6 +58,7 @@ struct fluid_scheme {
     isph_ppe ppe;
     isph_shifting shifting;
     isph_contact contact;
+    int wall_hold;              /* fluid_scheme_holds_at_walls */
     int capacity;
     double *viscous;            /* a_v of the last rates at a state of the scheme's own */
     double *pressure_acc;       /* a_p of the last rates */
@@ -65,6 +67,7 @@ struct fluid_scheme {
     double *last_load;          /* the pressure load of the last step on the solid */
     int explicit_solid;         /* 1: the solid's received acceleration as it is */
     double *x_fresh, *p_fresh;  /* positions and pressures of the last solve or step */
+    int32_t *id_fresh;          /* and the particles' ids */
     int n_fresh;                /* their count; 0: none */
     int projecting;             /* 1 inside step 2 */
     double dt_project, dt_last, t_project;
@@ -92,6 +95,7 @@ static int reserve(fluid_scheme *s, int n)
     for (size_t k = 0; k < sizeof arrays / sizeof arrays[0]; k++)
         *arrays[k] = fsi_grow(*arrays[k], vec, &failed);
     s->p_fresh = fsi_grow(s->p_fresh, cap * sizeof(double), &failed);
+    s->id_fresh = fsi_grow(s->id_fresh, cap * sizeof *s->id_fresh, &failed);
     if (!failed && s->last_load)
         memset(s->last_load + (size_t)s->capacity * FSI_DIM, 0,
                (cap - (size_t)s->capacity) * FSI_DIM * sizeof(double));
@@ -150,6 +154,7 @@ fluid_scheme *fluid_scheme_create(const fsi_case *c, const char *role,
         fsi_case_get_real(c, own, "wall_contact", ISPH_WALL_CONTACT) * props->sound_speed *
             props->sound_speed,
         1.0 / (0.75 * s->kernel.h)};
+    s->wall_hold = fsi_case_get_bool(c, own, "wall_hold", 1);
     s->skin = fsi_case_get_real(c, own, "neighbour_skin", FLUID_VERLET_SKIN) * s->kernel.support;
     fluid_verlet_init(&s->list);
     fsi_grid_set_periodic(&s->list.grid, &props->periodic);
@@ -184,6 +189,7 @@ void fluid_scheme_free(fluid_scheme *s)
                         s->last_load};
     for (size_t k = 0; k < sizeof arrays / sizeof arrays[0]; k++)
         free(arrays[k]);
+    free(s->id_fresh);
     free(s);
 }
 
@@ -191,6 +197,11 @@ int fluid_scheme_compressible(const fluid_scheme *s)
 {
     (void)s;
     return 0;
+}
+
+int fluid_scheme_holds_at_walls(const fluid_scheme *s)
+{
+    return s->wall_hold;
 }
 
 double fluid_scheme_pressure(const fluid_scheme *s, double density)
@@ -250,19 +261,35 @@ static const unsigned char *held_walls(const fluid_scheme *s, int n)
     return s->ppe.held && s->ppe.held_capacity >= n ? s->ppe.held : NULL;
 }
 
-/* 1 when p's positions and pressures are those the scheme left at its last solve or
- * step: the pressure is then the projection's for this state. */
-static int pressure_fresh(const fluid_scheme *s, const fluid_particles *p)
+/* 1 when the particles are those of the scheme's last solve or step (the same ids) and
+ * the fluid particles' positions and pressures are those it left: the pressure is then
+ * the projection's for this state, and the walls' and solid's pressures are put back
+ * from it. Their positions are not compared: between coupling windows the solid's
+ * received positions replace those the projection put at t + dt, which differ by the
+ * coupling's own error, and the solid's pressures come back as 0 (fluid_boundary.c);
+ * solving again for them, a whole second PPE per window when a window is one step,
+ * would move the pressure by that error only. */
+static int pressure_fresh(const fluid_scheme *s, fluid_particles *p)
 {
-    return s->n_fresh == p->n && p->n > 0 &&
-           memcmp(s->x_fresh, p->x, (size_t)p->n * FSI_DIM * sizeof *p->x) == 0 &&
-           memcmp(s->p_fresh, p->pressure, (size_t)p->n * sizeof *p->pressure) == 0;
+    const int n = p->n;
+    if (s->n_fresh != n || n == 0 || memcmp(s->id_fresh, p->id, (size_t)n * sizeof *p->id) != 0)
+        return 0;
+    for (int i = 0; i < n; i++)
+        if ((p->flags[i] & FLUID_PARTICLE_FLUID) &&
+            (s->p_fresh[i] != p->pressure[i] ||
+             memcmp(&s->x_fresh[i * FSI_DIM], &p->x[i * FSI_DIM], FSI_DIM * sizeof *p->x) != 0))
+            return 0;
+    for (int i = 0; i < n; i++)
+        if (!(p->flags[i] & FLUID_PARTICLE_FLUID))
+            p->pressure[i] = s->p_fresh[i];
+    return 1;
 }
 
 static void remember_state(fluid_scheme *s, const fluid_particles *p)
 {
     memcpy(s->x_fresh, p->x, (size_t)p->n * FSI_DIM * sizeof *p->x);
     memcpy(s->p_fresh, p->pressure, (size_t)p->n * sizeof *p->pressure);
+    memcpy(s->id_fresh, p->id, (size_t)p->n * sizeof *p->id);
     s->n_fresh = p->n;
 }
 
@@ -547,6 +574,7 @@ void fluid_scheme_particles_reordered(fluid_scheme *s, const int *sorted, int n,
     if (n <= s->n_fresh) {
         fsi_permute_rows(s->x_fresh, sorted, n, FSI_DIM * sizeof(double), scratch);
         fsi_permute_rows(s->p_fresh, sorted, n, sizeof(double), scratch);
+        fsi_permute_rows(s->id_fresh, sorted, n, sizeof *s->id_fresh, scratch);
     } else {
         s->n_fresh = 0;
     }
@@ -561,9 +589,9 @@ typedef struct {
 /* State between steps: the candidate lists, the Poisson equation's walls held at p = 0
  * and statistics, the pressure load of the last step on the solid (the solid's inertia
  * in the next projection; every row, since rows past today's solid particles are read
- * again when its set grows), the positions and pressures of the last solve or step
- * (whether the next rates solve again), the last step's length (that solve's) and the
- * step count. The pressure the solver starts from is the particles'. Pair rows, fields
+ * again when its set grows), the positions, pressures and ids of the last solve or
+ * step (whether the next rates solve again), the last step's length (that solve's) and
+ * the step count. The pressure the solver starts from is the particles'. Pair rows, fields
  * and forces are rebuilt by every rates call. */
 int fluid_scheme_save_state(const fluid_scheme *s, const fluid_particles *p, fsi_state *st)
 {
@@ -577,6 +605,7 @@ int fluid_scheme_save_state(const fluid_scheme *s, const fluid_particles *p, fsi
     if (h.n_fresh > 0) {
         fsi_state_put(st, "isph.x_fresh", s->x_fresh, (size_t)h.n_fresh * vec);
         fsi_state_put(st, "isph.p_fresh", s->p_fresh, (size_t)h.n_fresh * sizeof(double));
+        fsi_state_put(st, "isph.id_fresh", s->id_fresh, (size_t)h.n_fresh * sizeof *s->id_fresh);
     }
     if (fluid_verlet_save(&s->list, st, "isph.list") != 0 ||
         isph_ppe_save_state(&s->ppe, st, "isph.ppe") != 0)
@@ -600,7 +629,9 @@ int fluid_scheme_restore_state(fluid_scheme *s, fluid_particles *p, const fsi_st
          fsi_state_get(st, "isph.last_load", s->last_load, (size_t)h.load_rows * vec) != 0) ||
         (h.n_fresh > 0 &&
          (fsi_state_get(st, "isph.x_fresh", s->x_fresh, (size_t)h.n_fresh * vec) != 0 ||
-          fsi_state_get(st, "isph.p_fresh", s->p_fresh, (size_t)h.n_fresh * sizeof(double)) != 0)) ||
+          fsi_state_get(st, "isph.p_fresh", s->p_fresh, (size_t)h.n_fresh * sizeof(double)) != 0 ||
+          fsi_state_get(st, "isph.id_fresh", s->id_fresh,
+                        (size_t)h.n_fresh * sizeof *s->id_fresh) != 0)) ||
         fluid_verlet_restore(&s->list, st, "isph.list") != 0 ||
         isph_ppe_restore_state(&s->ppe, st, "isph.ppe") != 0)
         return -1;
