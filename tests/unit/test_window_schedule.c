@@ -1,6 +1,6 @@
 /* The coupler's window schedule: the grant is the smallest proposal, windows never
  * exceed the proposals or max_window, end exactly on every output, probe and end
- * time, and number frames 1, 2, ... */
+ * time without slivers before them, and number frames 1, 2, ... */
 #include <float.h>
 #include <math.h>
 #include <stdio.h>
@@ -10,9 +10,12 @@
 #include "unit_check.h"
 
 /* Runs a whole schedule and checks its invariants; returns the window count. */
+static double shortest;     /* the shortest window of the last schedule run */
+
 static long run_schedule(double t_end, double out, double probe, double max_window,
                          double proposal, int *frames, long *probes)
 {
+    shortest = INFINITY;
     fsi_window_schedule s;
     fsi_window_schedule_init(&s, t_end, out, probe, max_window);
     double t = 0.0;
@@ -23,6 +26,7 @@ static long run_schedule(double t_end, double out, double probe, double max_wind
         fsi_window_plan p = fsi_window_schedule_next(&s, t, proposal);
         windows++;
         CHECK(p.dt > 0, "window %ld has dt %g", windows, p.dt);
+        shortest = fmin(shortest, p.dt);
         CHECK(p.dt <= fmin(proposal, max_window) * (1 + 1e-12), "dt %.17g exceeds %.17g",
               p.dt, fmin(proposal, max_window));
         if (p.frame >= 0) {
@@ -83,6 +87,15 @@ int main(void)
     CHECK(probes == 33 + 10 - 3, "%ld probe rows, expected 40", probes);
     /* 250 windows of 0.004 s, plus the extra cuts at probe times not on the 0.004 grid. */
     CHECK(w >= 250 && w <= 250 + 40, "%ld windows", w);
+
+    /* No sliver before a probe time: 0.007 s windows would leave 0.002 s before 0.03;
+     * the two windows up to it share the remainder, so none is shorter than half the
+     * proposal (the events are 0.01 s apart or more). */
+    w = run_schedule(1.0, 0.1, 0.03, 0.007, 0.007, &frames, &probes);
+    CHECK(shortest >= 0.5 * 0.007 * (1 - 1e-12), "a window of %g s, below half the "
+          "proposal 0.007 s", shortest);
+    CHECK(frames == 10 && probes == 40, "%d frames and %ld probe rows, expected 10 and 40",
+          frames, probes);
 
     /* max_window below the proposal. */
     w = run_schedule(0.5, 0.25, 0.0, 0.01, 1.0, &frames, &probes);
