@@ -129,6 +129,54 @@ int fluid_leak_check(fluid_leak *l, const fluid_particles *p, double t,
     return found->particle >= 0;
 }
 
+int fluid_leak_hold(const fluid_leak *l, fluid_particles *p, double t)
+{
+    const int n = l->n, n_walls = l->n_walls;
+    if (n_walls == 0)
+        return 0;
+    double lo[FSI_DIM], hi[FSI_DIM], vw[FSI_DIM];
+    int moved = 0;
+    for (int w = 0; w < n_walls; w++) {
+        const fluid_box *b = &l->geometry->boxes[l->wall[w]];
+        wall_at(b, t, lo, hi);
+        double shift[FSI_DIM];
+        fluid_motion_at(&b->motion, t, shift, vw, NULL);
+#pragma omp parallel for schedule(static) reduction(+ : moved) \
+    if (n >= FLUID_PARALLEL_MIN_PARTICLES)
+        for (int i = 0; i < n; i++) {
+            if (!(p->flags[i] & FLUID_PARTICLE_FLUID))
+                continue;
+            double *x = &p->x[i * FSI_DIM], *v = &p->v[i * FSI_DIM];
+            int inside = 1;
+            for (int d = 0; d < FSI_DIM && inside; d++)
+                inside = l->periodic[d] || (x[d] > lo[d] && x[d] < hi[d]);
+            if (!inside)
+                continue;
+            const unsigned char *side = &l->side[((size_t)i * n_walls + w) * FSI_DIM];
+            int axis = -1;
+            double depth = 0.0;
+            for (int d = 0; d < FSI_DIM; d++) {
+                const double dd = side[d] == SIDE_BELOW   ? x[d] - lo[d]
+                                  : side[d] == SIDE_ABOVE ? hi[d] - x[d]
+                                                          : -1.0;
+                if (dd >= 0.0 && (axis < 0 || dd < depth)) {
+                    axis = d;
+                    depth = dd;
+                }
+            }
+            if (axis < 0)
+                continue;   /* inside since the start, or from an unknown side */
+            const int below = side[axis] == SIDE_BELOW;
+            x[axis] = below ? lo[axis] : hi[axis];
+            const double into = below ? v[axis] - vw[axis] : vw[axis] - v[axis];
+            if (into > 0.0)
+                v[axis] = vw[axis];
+            moved++;
+        }
+    }
+    return moved;
+}
+
 int fluid_leak_reorder(fluid_leak *l, const int *sorted)
 {
     if (l->n_walls == 0)

@@ -75,6 +75,7 @@ typedef struct {
     fluid_wall_motion motion;
     fluid_coupling coupling;    /* the solid's particles at the tail of p (000 §3) */
     fluid_leak leak;            /* fluid particles that cross a wall (fluid_leak.h) */
+    long held;                  /* particles put back on a wall's face (fluid_leak_hold) */
     int mach_warned;            /* MACH_WARN was passed and said */
     int n_fixed;        /* fluid and wall particles of the case, before that tail */
     double t;           /* time of the current state (walls are put there) */
@@ -545,7 +546,11 @@ static int advance(fluid_run *s, double t0, double dt, const char *window)
         if (m < 1)
             m = 1;
         const double h = m == 1 ? remaining : remaining / (double)m;
-        if (step(s, h) != 0 || check_finite(s, s->t, window) != 0 || check_leak(s, window) != 0)
+        if (step(s, h) != 0 || check_finite(s, s->t, window) != 0)
+            return -1;
+        if (fluid_scheme_holds_at_walls(s->scheme))
+            s->held += fluid_leak_hold(&s->leak, &s->p, s->t);
+        if (check_leak(s, window) != 0)
             return -1;
         if (m == 1)
             s->t = t_end;
@@ -955,6 +960,10 @@ int main(void)
                  fluid_compression_energy(&s.p, s.scheme), s.compression0,
                  s.potential0 - fluid_potential_energy(&s.p, s.props.gravity),
                  fluid_max_speed(&s.p));
+        if (fluid_scheme_holds_at_walls(s.scheme))
+            fsi_info("walls: %ld times a fluid particle was put back on the face of a wall "
+                     "it had entered (fluid_leak_hold; iterations and restarts included)",
+                     s.held);
         /* One particle-step is one fluid particle through one predictor-corrector step
          * (two evaluations of the rates), the unit docs/performance.md uses. */
         const double busy = s.timers.seconds[s.t_rates] + s.timers.seconds[s.t_integrate];

@@ -61,6 +61,12 @@ static const fsi_key_spec keys[] = {
      "c0 the case's [fluid] sound speed, here only the contact's stiffness scale): it keeps "
      "particles without a Poisson equation of their own (surface, splash) out of the walls; "
      "0 turns it off."},
+    {"wall_hold", FSI_KEY_BOOL, "-", "true", 0, 0, 0, NULL,
+     "A fluid particle that a step took into a [fluid.wall] box (axis-aligned) from outside "
+     "is put back on the face it came through, its velocity into the wall set to the "
+     "wall's: a kinematic non-penetration constraint behind the soft contact, which stops "
+     "only particles slower than sqrt(wall_contact) c0 (docs/isph.md); the fluid log "
+     "counts the particles put back. Not the solid's particles."},
     {"solid_inertia", FSI_KEY_CHOICE, "-", "in_poisson", 0, 0, 0, "in_poisson|explicit",
      "in_poisson: each solid particle's acceleration in its Poisson row is its received "
      "one without the fluid's last load plus the load the solve gives it over its mass "

@@ -151,6 +151,12 @@ int fluid_scheme_compressible(const fluid_scheme *s)
     return 1;
 }
 
+int fluid_scheme_holds_at_walls(const fluid_scheme *s)
+{
+    (void)s;
+    return 0;   /* the walls' pressure holds the fluid out */
+}
+
 double fluid_scheme_pressure(const fluid_scheme *s, double density)
 {
     return tait_eos_pressure(&s->eos, density);

@@ -11,7 +11,10 @@
  *    floor beyond its drawn ends (in a periodic image) is found;
  *  - a moving wall is where its motion puts it: a particle that stands still while the
  *    wall moves past it is found, one the wall does not reach is not;
- *  - after the particles are permuted the sides follow them. */
+ *  - after the particles are permuted the sides follow them;
+ *  - fluid_leak_hold puts a particle that came into a wall back on the face it came
+ *    through, with its velocity into the wall set to the wall's (a moving wall's too),
+ *    and leaves alone one outside the walls or one inside since the start. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -24,10 +27,10 @@ static const double TOL = 0.036;
 
 static fluid_box boxes[2];
 static fluid_geometry geometry = {0.01, 2, 0, boxes, NULL};
-static double x[N * FSI_DIM];
+static double x[N * FSI_DIM], v[N * FSI_DIM];
 static int32_t id[N];
 static uint8_t flags[N];
-static fluid_particles p = {.n = N, .spacing = 0.01, .id = id, .x = x, .flags = flags};
+static fluid_particles p = {.n = N, .spacing = 0.01, .id = id, .x = x, .v = v, .flags = flags};
 
 static void set_wall(fluid_box *b, const char *section, double x0, double y0, double x1,
                      double y1)
@@ -155,5 +158,61 @@ int main(void)
     CHECK(move(&l, 3, x[3 * FSI_DIM], -0.2, 0.0, &c) && c.particle == 3 && id[3] == 100,
           "after a permutation: particle %d (id %d)", c.particle, id[c.particle]);
     fluid_leak_free(&l);
+
+    /* Held at the walls. Particle 0 falls into the floor at (1, -2) m/s, particle 1 into
+     * the left wall from the tank at (-2, 0.5) m/s, particle 2 leaves the floor upward,
+     * particle 3 stays in the water. */
+    start(&l, NULL);
+    memset(v, 0, sizeof v);
+    place(0, 0.3, 0.001);
+    place(1, 0.002, 0.1);
+    place(2, 0.6, 0.001);
+    CHECK(fluid_leak_check(&l, &p, 0.0, &c) == 0, "hold: the sides before");
+    place(0, 0.3, -0.005);
+    v[0] = 1.0, v[1] = -2.0;
+    place(1, -0.003, 0.1);
+    v[FSI_DIM] = -2.0, v[FSI_DIM + 1] = 0.5;
+    place(2, 0.6, -0.001);
+    v[2 * FSI_DIM + 1] = 1.0;
+    const int held = fluid_leak_hold(&l, &p, 0.0);
+    CHECK(held == 3, "%d particles held, expected 3", held);
+    CHECK(x[1] == 0.0 && x[0] == 0.3 && v[0] == 1.0 && v[1] == 0.0,
+          "into the floor: put at (%g, %g) with velocity (%g, %g), expected (0.3, 0) and "
+          "(1, 0)", x[0], x[1], v[0], v[1]);
+    CHECK(x[FSI_DIM] == 0.0 && x[FSI_DIM + 1] == 0.1 && v[FSI_DIM] == 0.0 &&
+              v[FSI_DIM + 1] == 0.5,
+          "into the left wall: put at (%g, %g) with velocity (%g, %g), expected (0, 0.1) and "
+          "(0, 0.5)", x[FSI_DIM], x[FSI_DIM + 1], v[FSI_DIM], v[FSI_DIM + 1]);
+    CHECK(x[2 * FSI_DIM + 1] == 0.0 && v[2 * FSI_DIM + 1] == 1.0,
+          "leaving the floor: put at y = %g with v_y = %g, expected 0 and 1 (not into the wall)",
+          x[2 * FSI_DIM + 1], v[2 * FSI_DIM + 1]);
+    CHECK(x[3 * FSI_DIM] == 0.1 + 0.2 * 3 && x[3 * FSI_DIM + 1] == 0.05, "in the water: moved");
+    CHECK(fluid_leak_check(&l, &p, 0.0, &c) == 0 && fluid_leak_hold(&l, &p, 0.0) == 0,
+          "on the faces: no leak, nothing more to hold");
+    fluid_leak_free(&l);
+
+    /* Inside a wall since the start: its side is unknown, it is left where it is. */
+    start(&l, NULL);
+    place(0, 0.3, -0.02);
+    fluid_leak_free(&l);
+    CHECK(fluid_leak_init(&l, &geometry, NULL, TOL, &p, N, 0.0) == 0, "init");
+    CHECK(fluid_leak_hold(&l, &p, 0.0) == 0 && x[1] == -0.02, "inside since the start: moved");
+    fluid_leak_free(&l);
+
+    /* A moving wall: the left wall at X(t) = 0.2 sin(2 pi t) moves at 0.4 pi m/s at
+     * t = 0. A particle going into it at -1 m/s leaves with the wall's velocity. */
+    boxes[1].motion = (fluid_motion){FLUID_MOTION_HARMONIC, 0.2, 1.0, 0.0, {0}};
+    boxes[1].motion.direction[0] = 1.0;
+    start(&l, NULL);
+    memset(v, 0, sizeof v);
+    place(0, 0.002, 0.1);
+    CHECK(fluid_leak_check(&l, &p, 0.0, &c) == 0, "moving wall: the side before");
+    place(0, -0.001, 0.1);
+    v[0] = -1.0;
+    CHECK(fluid_leak_hold(&l, &p, 0.0) == 1 && fabs(x[0]) < 1e-15 &&
+              fabs(v[0] - 0.4 * M_PI) < 1e-12,
+          "moving wall: put at x = %g with v_x = %g, expected 0 and %g", x[0], v[0], 0.4 * M_PI);
+    fluid_leak_free(&l);
+    boxes[1].motion.kind = FLUID_MOTION_NONE;
     return unit_check_report("test_fluid_leak");
 }
