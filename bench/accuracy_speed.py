@@ -27,7 +27,8 @@ def main():
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-    fig, ax = plt.subplots(figsize=(6, 4))
+    # the legend beside the axes: with many combinations it would cover their points
+    fig, ax = plt.subplots(figsize=(6 if len(lines) < 4 else 8.5, 4))
     for solvers, rows in sorted(lines.items()):
         rows.sort(key=lambda r: float(r["wall_s"]))
         t = [float(r["wall_s"]) for r in rows]
@@ -42,7 +43,10 @@ def main():
     ax.set_xlabel("wall-clock time [s] (threads as in the table)")
     ax.set_ylabel(a.error_label + " [%]")
     ax.set_title(a.title)
-    ax.legend(fontsize=8)
+    if len(lines) < 4:
+        ax.legend(fontsize=8)
+    else:
+        ax.legend(fontsize=8, loc="upper left", bbox_to_anchor=(1.01, 1.0), borderaxespad=0)
     fig.tight_layout()
     fig.savefig(a.png, dpi=120)
 

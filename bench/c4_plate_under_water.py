@@ -96,7 +96,9 @@ def main():
                    label="2D elasticity (finite elements) %.1f um" % (1e6 * rows[0]["delta_fe"]))
     ax.set_xlabel("t [s]")
     ax.set_ylabel("mid-span deflection -u_y [um]")
-    ax.set_title("C4 water column on an aluminium plate (ULPH + NOSB-PD)")
+    combos = sorted({fsi_results.solvers(r) for r in a.runs
+                     if os.path.exists(os.path.join(r, "probes.csv"))})
+    ax.set_title("C4 water column on an aluminium plate (%s)" % ", ".join(combos))
     ax.legend(fontsize=8)
     fig.tight_layout()
     fig.savefig(a.png, dpi=120)
