@@ -59,7 +59,8 @@ def main():
     unit = "?"
     for item in a.runs:
         label, run = item.split("=", 1)
-        t_raw, v_raw, unit = history(run, a.file, a.column)
+        t_raw, v_raw, u = history(run, a.file, a.column)
+        unit = u if u != "?" else unit     # runs of older builds have no units line
         t = np.arange(0.0, t_raw[-1] + 1e-12, a.interval)
         v = np.interp(t, t_raw, v_raw)
         keep = t >= a.t0
