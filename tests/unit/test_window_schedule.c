@@ -11,11 +11,13 @@
 
 /* Runs a whole schedule and checks its invariants; returns the window count. */
 static double shortest;     /* the shortest window of the last schedule run */
+static double longest_short; /* its longest window below 0.99 of the proposal */
 
 static long run_schedule(double t_end, double out, double probe, double max_window,
                          double proposal, int *frames, long *probes)
 {
     shortest = INFINITY;
+    longest_short = 0.0;
     fsi_window_schedule s;
     fsi_window_schedule_init(&s, t_end, out, probe, max_window);
     double t = 0.0;
@@ -27,6 +29,8 @@ static long run_schedule(double t_end, double out, double probe, double max_wind
         windows++;
         CHECK(p.dt > 0, "window %ld has dt %g", windows, p.dt);
         shortest = fmin(shortest, p.dt);
+        if (p.dt < 0.99 * fmin(proposal, max_window))
+            longest_short = fmax(longest_short, p.dt);
         CHECK(p.dt <= fmin(proposal, max_window) * (1 + 1e-12), "dt %.17g exceeds %.17g",
               p.dt, fmin(proposal, max_window));
         if (p.frame >= 0) {
@@ -96,6 +100,13 @@ int main(void)
           "proposal 0.007 s", shortest);
     CHECK(frames == 10 && probes == 40, "%d frames and %ld probe rows, expected 10 and 40",
           frames, probes);
+    /* A remainder of exactly half a window keeps its full window whatever the last bits
+     * of the sums: 2e-4 s windows against probes every 5e-4 s go 2, 2, 1 (1e-4 s the
+     * shortest), not 2, 1.5, 1.5 where the sum falls a bit short. */
+    w = run_schedule(0.2, 0.02, 5e-4, 2e-4, 2e-4, &frames, &probes);
+    CHECK(w == 1200 && longest_short < 1e-4 * (1 + 1e-9), "%ld windows, a window before a "
+          "probe time of %.17g s: expected 1200, each 2e-4 or 1e-4 s (C4's schedule)", w,
+          longest_short);
 
     /* max_window below the proposal. */
     w = run_schedule(0.5, 0.25, 0.0, 0.01, 1.0, &frames, &probes);
