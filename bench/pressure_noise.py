@@ -23,16 +23,14 @@ import numpy as np
 
 def history(run, name, column):
     with open("%s/%s" % (run, name), newline="") as f:
-        lines = [line for line in f if not line.startswith("#")]
-    rows = list(csv.DictReader(lines))
+        lines = f.readlines()
+    rows = list(csv.DictReader(line for line in lines if not line.startswith("#")))
     if not rows or column not in rows[0]:
         raise SystemExit("%s/%s: no column %s" % (run, name, column))
-    with open("%s/%s" % (run, name), newline="") as f:
-        units = next((line for line in f if line.startswith("# units:")), None)
+    units = next((line for line in lines if line.startswith("# units:")), None)
     unit = "?"
     if units:
-        header = list(rows[0].keys())
-        unit = units[len("# units:"):].strip().split(",")[header.index(column)]
+        unit = units[len("# units:"):].strip().split(",")[list(rows[0]).index(column)]
     t = np.array([float(r["time"]) for r in rows])
     v = np.array([float(r[column]) for r in rows])
     return t, v, unit

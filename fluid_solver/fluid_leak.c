@@ -9,11 +9,12 @@
 
 enum { SIDE_UNKNOWN = 0, SIDE_BELOW = 1, SIDE_ABOVE = 2 };
 
-/* The wall box b at time t: where it is drawn, moved by its motion. */
-static void wall_at(const fluid_box *b, double t, double *lo, double *hi)
+/* The wall box b at time t: where it is drawn, moved by its motion, and its velocity
+ * (vel may be NULL). */
+static void wall_at(const fluid_box *b, double t, double *lo, double *hi, double *vel)
 {
     double s[FSI_DIM];
-    fluid_motion_at(&b->motion, t, s, NULL, NULL);
+    fluid_motion_at(&b->motion, t, s, vel, NULL);
     for (int d = 0; d < FSI_DIM; d++) {
         lo[d] = b->shape.min[d] + s[d];
         hi[d] = b->shape.max[d] + s[d];
@@ -54,6 +55,34 @@ static int update_sides(const fluid_leak *l, const double *lo, const double *hi,
     return crossed;
 }
 
+/* A fluid particle at x (velocity v) inside the wall [lo, hi] (velocity vw), having come
+ * in from a known side: back on the face it came through (of the axes it came in along,
+ * the one of least depth), its velocity into the wall set to the wall's. Returns 1 when
+ * it was moved. */
+static int hold_out(const fluid_leak *l, const double *lo, const double *hi, const double *vw,
+                    const unsigned char *side, double *x, double *v)
+{
+    int axis = -1;
+    double depth = 0.0;
+    for (int d = 0; d < FSI_DIM; d++) {
+        if (!l->periodic[d] && !(x[d] > lo[d] && x[d] < hi[d]))
+            return 0;   /* not inside */
+        const double dd = side[d] == SIDE_BELOW ? x[d] - lo[d]
+                          : side[d] == SIDE_ABOVE ? hi[d] - x[d] : -1.0;
+        if (dd >= 0.0 && (axis < 0 || dd < depth)) {
+            axis = d;
+            depth = dd;
+        }
+    }
+    if (axis < 0)
+        return 0;       /* inside since the start, or from an unknown side */
+    const int below = side[axis] == SIDE_BELOW;
+    x[axis] = below ? lo[axis] : hi[axis];
+    if (below ? v[axis] > vw[axis] : v[axis] < vw[axis])
+        v[axis] = vw[axis];
+    return 1;
+}
+
 /* Walls whose sides the check follows: axis-aligned boxes. A turned box, disc or
  * polygon has no slabs along the axes to be on one side of. */
 static int leak_checked(const fluid_box *b)
@@ -77,8 +106,9 @@ int fluid_leak_init(fluid_leak *l, const fluid_geometry *g, const fsi_periodic *
     l->wall = malloc((size_t)l->n_walls * sizeof *l->wall);
     l->box_lo = malloc((size_t)l->n_walls * FSI_DIM * sizeof *l->box_lo);
     l->box_hi = malloc((size_t)l->n_walls * FSI_DIM * sizeof *l->box_hi);
+    l->box_v = malloc((size_t)l->n_walls * FSI_DIM * sizeof *l->box_v);
     l->side = calloc((size_t)(n > 0 ? n : 1) * (size_t)l->n_walls * FSI_DIM, 1);
-    if (!l->wall || !l->box_lo || !l->box_hi || !l->side) {
+    if (!l->wall || !l->box_lo || !l->box_hi || !l->box_v || !l->side) {
         fluid_leak_free(l);
         return -1;
     }
@@ -90,8 +120,9 @@ int fluid_leak_init(fluid_leak *l, const fluid_geometry *g, const fsi_periodic *
     return 0;
 }
 
-int fluid_leak_check(fluid_leak *l, const fluid_particles *p, double t,
-                     fluid_leak_crossing *found)
+/* fluid_leak_check, and with x and v (p's own arrays) fluid_leak_hold_and_check. */
+static int scan(fluid_leak *l, const fluid_particles *p, double *x, double *v, double t,
+                long *held, fluid_leak_crossing *found)
 {
     found->particle = -1;
     const int n = l->n, n_walls = l->n_walls;
@@ -99,19 +130,24 @@ int fluid_leak_check(fluid_leak *l, const fluid_particles *p, double t,
         return 0;
     double *lo = l->box_lo, *hi = l->box_hi;
     for (int w = 0; w < n_walls; w++)
-        wall_at(&l->geometry->boxes[l->wall[w]], t, &lo[w * FSI_DIM], &hi[w * FSI_DIM]);
+        wall_at(&l->geometry->boxes[l->wall[w]], t, &lo[w * FSI_DIM], &hi[w * FSI_DIM],
+                &l->box_v[w * FSI_DIM]);
     /* One pass over the particles, every wall at each (its sides are its own). The
      * first crossing (by wall, then index) is the one reported, on any number of
      * threads: the smallest key 8 (w n + i) + 2 axis + upward. */
     const long long none = 8LL * n_walls * n;
-    long long first = none;
-#pragma omp parallel for schedule(static) reduction(min : first) \
+    long long first = none, moved = 0;
+#pragma omp parallel for schedule(static) reduction(min : first) reduction(+ : moved) \
     if (n >= FLUID_PARALLEL_MIN_PARTICLES)
     for (int i = 0; i < n; i++) {
         if (!(p->flags[i] & FLUID_PARTICLE_FLUID))
             continue;
         for (int w = 0; w < n_walls; w++) {
             unsigned char *side = &l->side[((size_t)i * n_walls + w) * FSI_DIM];
+            if (x)
+                moved += hold_out(l, &lo[w * FSI_DIM], &hi[w * FSI_DIM],
+                                  &l->box_v[w * FSI_DIM], side, &x[i * FSI_DIM],
+                                  &v[i * FSI_DIM]);
             int upward = 0;
             const int d = update_sides(l, &lo[w * FSI_DIM], &hi[w * FSI_DIM],
                                        &p->x[i * FSI_DIM], side, &upward);
@@ -126,55 +162,21 @@ int fluid_leak_check(fluid_leak *l, const fluid_particles *p, double t,
         *found = (fluid_leak_crossing){(int)(wi % n), l->wall[w], d, upward,
                                        upward ? hi[w * FSI_DIM + d] : lo[w * FSI_DIM + d]};
     }
+    if (held)
+        *held += moved;
     return found->particle >= 0;
 }
 
-int fluid_leak_hold(const fluid_leak *l, fluid_particles *p, double t)
+int fluid_leak_check(fluid_leak *l, const fluid_particles *p, double t,
+                     fluid_leak_crossing *found)
 {
-    const int n = l->n, n_walls = l->n_walls;
-    if (n_walls == 0)
-        return 0;
-    double lo[FSI_DIM], hi[FSI_DIM], vw[FSI_DIM];
-    int moved = 0;
-    for (int w = 0; w < n_walls; w++) {
-        const fluid_box *b = &l->geometry->boxes[l->wall[w]];
-        wall_at(b, t, lo, hi);
-        double shift[FSI_DIM];
-        fluid_motion_at(&b->motion, t, shift, vw, NULL);
-#pragma omp parallel for schedule(static) reduction(+ : moved) \
-    if (n >= FLUID_PARALLEL_MIN_PARTICLES)
-        for (int i = 0; i < n; i++) {
-            if (!(p->flags[i] & FLUID_PARTICLE_FLUID))
-                continue;
-            double *x = &p->x[i * FSI_DIM], *v = &p->v[i * FSI_DIM];
-            int inside = 1;
-            for (int d = 0; d < FSI_DIM && inside; d++)
-                inside = l->periodic[d] || (x[d] > lo[d] && x[d] < hi[d]);
-            if (!inside)
-                continue;
-            const unsigned char *side = &l->side[((size_t)i * n_walls + w) * FSI_DIM];
-            int axis = -1;
-            double depth = 0.0;
-            for (int d = 0; d < FSI_DIM; d++) {
-                const double dd = side[d] == SIDE_BELOW   ? x[d] - lo[d]
-                                  : side[d] == SIDE_ABOVE ? hi[d] - x[d]
-                                                          : -1.0;
-                if (dd >= 0.0 && (axis < 0 || dd < depth)) {
-                    axis = d;
-                    depth = dd;
-                }
-            }
-            if (axis < 0)
-                continue;   /* inside since the start, or from an unknown side */
-            const int below = side[axis] == SIDE_BELOW;
-            x[axis] = below ? lo[axis] : hi[axis];
-            const double into = below ? v[axis] - vw[axis] : vw[axis] - v[axis];
-            if (into > 0.0)
-                v[axis] = vw[axis];
-            moved++;
-        }
-    }
-    return moved;
+    return scan(l, p, NULL, NULL, t, NULL, found);
+}
+
+int fluid_leak_hold_and_check(fluid_leak *l, fluid_particles *p, double t, long *held,
+                              fluid_leak_crossing *found)
+{
+    return scan(l, p, p->x, p->v, t, held, found);
 }
 
 int fluid_leak_reorder(fluid_leak *l, const int *sorted)
@@ -215,6 +217,7 @@ void fluid_leak_free(fluid_leak *l)
     free(l->wall);
     free(l->box_lo);
     free(l->box_hi);
+    free(l->box_v);
     free(l->side);
     memset(l, 0, sizeof *l);
 }

@@ -16,8 +16,8 @@
  * floor, the gap under a gate) never counts, and neither does a particle that sinks
  * into a wall and comes back out on its own side. The check runs after every step, when
  * a particle has moved a fraction of a smoothing length. The same sides tell
- * fluid_leak_hold where to put back a particle that came into a wall, for a scheme
- * that asks for it (fluid_scheme_holds_at_walls). */
+ * fluid_leak_hold_and_check where to put back a particle that came into a wall, for a
+ * scheme that asks for it (fluid_scheme_holds_at_walls). */
 #ifndef FSI_FLUID_LEAK_H
 #define FSI_FLUID_LEAK_H
 
@@ -33,6 +33,7 @@ typedef struct {
     int n_walls;
     int *wall;                  /* the walls' indices in geometry->boxes */
     double *box_lo, *box_hi;    /* where they are at the last check */
+    double *box_v;              /* and their velocities */
     int periodic[FSI_DIM];
     double tolerance;           /* how far past a wall counts [m] */
     int n;                      /* particles the side table covers */
@@ -58,13 +59,14 @@ int fluid_leak_init(fluid_leak *l, const fluid_geometry *g, const fsi_periodic *
 int fluid_leak_check(fluid_leak *l, const fluid_particles *p, double t,
                      fluid_leak_crossing *found);
 
-/* Puts every fluid particle among the first n of p that lies inside a followed wall box
- * at time t, having come in from a known side, back on the face it came through (of the
- * axes it came in along, the one of least depth), with its velocity into the wall set to
- * the wall's: a kinematic non-penetration constraint for schemes whose forces do not
- * hold every particle out (fluid_scheme_holds_at_walls). Call it after a step and before
- * fluid_leak_check. Returns how many particles it moved. */
-int fluid_leak_hold(const fluid_leak *l, fluid_particles *p, double t);
+/* The same pass, which first puts every fluid particle that lies inside a followed wall
+ * box, having come in from a known side, back on the face it came through (of the axes
+ * it came in along, the one of least depth), with its velocity into the wall set to the
+ * wall's, and adds to *held how many it moved: a kinematic non-penetration constraint
+ * for schemes whose forces do not hold every particle out (fluid_scheme_holds_at_walls).
+ * A particle inside a wall since the start, or from an unknown side, stays. */
+int fluid_leak_hold_and_check(fluid_leak *l, fluid_particles *p, double t, long *held,
+                              fluid_leak_crossing *found);
 
 /* The particles were permuted: the particle now at index k was at sorted[k]. Returns 0,
  * or -1 when memory runs out (nothing changed). */

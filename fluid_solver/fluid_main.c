@@ -75,7 +75,7 @@ typedef struct {
     fluid_wall_motion motion;
     fluid_coupling coupling;    /* the solid's particles at the tail of p (000 §3) */
     fluid_leak leak;            /* fluid particles that cross a wall (fluid_leak.h) */
-    long held;                  /* particles put back on a wall's face (fluid_leak_hold) */
+    long held;                  /* particles put back on a wall's face (fluid_leak.h) */
     int mach_warned;            /* MACH_WARN was passed and said */
     int n_fixed;        /* fluid and wall particles of the case, before that tail */
     double t;           /* time of the current state (walls are put there) */
@@ -428,11 +428,15 @@ static int check_finite(fluid_run *s, double t, const char *window)
 
 static const char axis_name[3] = {'x', 'y', 'z'};
 
-/* A fluid particle that went through a wall after a step (fluid_leak.h). */
+/* A fluid particle that went through a wall after a step, after those that went into one
+ * are put back when the scheme asks for it (fluid_leak.h). */
 static int check_leak(fluid_run *s, const char *window)
 {
     fluid_leak_crossing c;
-    if (!fluid_leak_check(&s->leak, &s->p, s->t, &c))
+    const int found = fluid_scheme_holds_at_walls(s->scheme)
+                          ? fluid_leak_hold_and_check(&s->leak, &s->p, s->t, &s->held, &c)
+                          : fluid_leak_check(&s->leak, &s->p, s->t, &c);
+    if (!found)
         return 0;
     const fluid_box *wall = &s->geometry.boxes[c.box];
     char at[128];
@@ -546,11 +550,7 @@ static int advance(fluid_run *s, double t0, double dt, const char *window)
         if (m < 1)
             m = 1;
         const double h = m == 1 ? remaining : remaining / (double)m;
-        if (step(s, h) != 0 || check_finite(s, s->t, window) != 0)
-            return -1;
-        if (fluid_scheme_holds_at_walls(s->scheme))
-            s->held += fluid_leak_hold(&s->leak, &s->p, s->t);
-        if (check_leak(s, window) != 0)
+        if (step(s, h) != 0 || check_finite(s, s->t, window) != 0 || check_leak(s, window) != 0)
             return -1;
         if (m == 1)
             s->t = t_end;
@@ -962,7 +962,7 @@ int main(void)
                  fluid_max_speed(&s.p));
         if (fluid_scheme_holds_at_walls(s.scheme))
             fsi_info("walls: %ld times a fluid particle was put back on the face of a wall "
-                     "it had entered (fluid_leak_hold; since this process started, every "
+                     "it had entered (fluid_leak_hold_and_check; since this process started, every "
                      "iteration of an implicit window counted)", s.held);
         /* One particle-step is one fluid particle through one predictor-corrector step
          * (two evaluations of the rates), the unit docs/performance.md uses. */
