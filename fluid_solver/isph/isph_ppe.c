@@ -143,11 +143,19 @@ static void fluid_row(isph_ppe *s, const isph_pairs *q, const fluid_particles *p
             fmin(0.0, -2.0 * p->volume[j] * fsi_vec_dot(x, bg) / (rho0 * fsi_vec_dot(x, x)));
         diag += c;
         s->coef[e] = -c;
+        /* a wall or solid particle: u*_S = v_S + dt (g - a_S), v_S its velocity at
+         * t + dt and a_S the received acceleration that took it there (for a solid,
+         * the fluid's last load included). Corrected by its row's gradient
+         * rho0 (g - a'), a' = a_int + F_S(p) / m_S for a solid in the equation, it
+         * ends at v_S(t) + dt a': the load counted once. With a_int in place of a_S
+         * it would end at v_S(t) + dt (a_S + F_S / m_S), the load counted twice, and
+         * water on a floor at rest would follow it down (docs/isph.md). */
         double uj[FSI_DIM];
         for (int d = 0; d < FSI_DIM; d++)
             uj[d] = (p->flags[j] & FLUID_PARTICLE_FLUID)
                         ? u_star[j * FSI_DIM + d]
-                        : p->v[j * FSI_DIM + d] + dt * (gravity[d] - own_acceleration(s, p, j, d));
+                        : p->v[j * FSI_DIM + d] +
+                              dt * (gravity[d] - p->boundary_acceleration[j * FSI_DIM + d]);
         for (int d = 0; d < FSI_DIM; d++)
             div += p->volume[j] * (uj[d] - ui[d]) * bg[d];
     }

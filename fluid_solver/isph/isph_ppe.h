@@ -21,7 +21,8 @@
  *     by the pressure gradient of that condition, rho0 (g - a_S), leaves the wall's own
  *     v_S (a fluid at rest on a floor sees no divergence, and the pressure is exactly
  *     hydrostatic). A solid particle of known mass has its acceleration taken
- *     implicitly (last_load below, boundary_row in isph_ppe.c).
+ *     implicitly (last_load below, boundary_row in isph_ppe.c); its u*_S keeps the
+ *     whole received a_S, which already holds the last load (fluid_row in isph_ppe.c).
  *     A wall or solid particle whose pressure comes out negative is held at p = 0 and
  *     the equation solved again (at most ISPH_WALL_PASSES times; the set carries over to
  *     the next projection): a wall pushes, never pulls;
