@@ -34,7 +34,10 @@ if [ ! -f /usr/share/java/lcm.jar ] || ! command -v javac >/dev/null; then
 fi
 
 [ -f "$FSI_LCMTYPES_JAR" ] || fail "liblcm-java and a JDK are here but $FSI_LCMTYPES_JAR was not built"
-unzip -l "$FSI_LCMTYPES_JAR" | grep -q "fsi/solid_state_t.class" || fail "the jar lacks fsi/solid_state_t.class"
+# the listing first: grep -q in a pipe under pipefail can close it while unzip still
+# writes, and unzip's SIGPIPE then fails the check (seen once in CI)
+listing=$(unzip -l "$FSI_LCMTYPES_JAR") || fail "cannot list the jar"
+grep -q "fsi/solid_state_t.class" <<<"$listing" || fail "the jar lacks fsi/solid_state_t.class"
 javac -nowarn -cp /usr/share/java/lcm.jar -d classes "$FSI_SOURCE_DIR/tests/system/DecodeTrafficLog.java"
 java -cp "/usr/share/java/lcm.jar:$FSI_LCMTYPES_JAR:classes" DecodeTrafficLog run/traffic.lcmlog \
   >java_counts.txt || fail "the Java types do not decode the log: $(cat java_counts.txt)"
