@@ -1083,8 +1083,6 @@ static void test_saved_state(void)
     omp_set_num_threads(1);
 }
 
-/* The case: the scheme's settings file (argument 1) when it exists, else an empty
- * [fluid] section, so that every key of the scheme keeps its default. */
 /* ---- a solid floor at rest ----------------------------------------------------- */
 
 /* The tank with its floor made of moving boundary particles (a solid as the fluid
@@ -1119,7 +1117,7 @@ static double water_height(const fluid_particles *p)
  * loop takes them: its centre of mass stays within a quarter of a spacing of where it
  * started. Water cannot go down into a floor that stays put; a quarter of a spacing
  * is what a row of particles next to the floor may give (the weakly compressible
- * schemes' compression is 2e-4 dx here). A scheme that puts the solid's inertia into
+ * schemes move it by 3e-4 to 1.5e-3 dx here, ISPH by 0.11 dx). A scheme that puts the solid's inertia into
  * its pressure equation and counts the fluid's last load in the floor's motion twice
  * (in the received acceleration and again as its own) sees the floor recede by
  * dt F / m_S every step, and the water follows it down by spacings. */
@@ -1164,6 +1162,8 @@ static void test_solid_floor_at_rest(void)
     scene_free(&s);
 }
 
+/* The case: the scheme's settings file (argument 1) when it exists, else an empty
+ * [fluid] section, so that every key of the scheme keeps its default. */
 static fsi_case *read_case(const char *path)
 {
     if (path && access(path, R_OK) == 0)
