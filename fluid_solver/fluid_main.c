@@ -962,8 +962,8 @@ int main(void)
                  fluid_max_speed(&s.p));
         if (fluid_scheme_holds_at_walls(s.scheme))
             fsi_info("walls: %ld times a fluid particle was put back on the face of a wall "
-                     "it had entered (fluid_leak_hold_and_check; since this process started, every "
-                     "iteration of an implicit window counted)", s.held);
+                     "it had entered (fluid_leak_hold_and_check; since this process "
+                     "started, every iteration of an implicit window counted)", s.held);
         /* One particle-step is one fluid particle through one predictor-corrector step
          * (two evaluations of the rates), the unit docs/performance.md uses. */
         const double busy = s.timers.seconds[s.t_rates] + s.timers.seconds[s.t_integrate];

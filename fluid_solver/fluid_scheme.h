@@ -55,9 +55,9 @@ fluid_scheme *fluid_scheme_create(const fsi_case *c, const char *role,
 int fluid_scheme_compressible(const fluid_scheme *s);
 
 /* 1 when the main loop is to put fluid particles that a step took into a wall box back
- * on its face (fluid_leak_hold_and_check): a scheme whose forces do not hold every particle out
- * of the walls (ISPH's splash particles have no Poisson row). 0 for the weakly
- * compressible schemes, whose wall pressure does. */
+ * on its face (fluid_leak_hold_and_check): a scheme whose forces do not hold every
+ * particle out of the walls (ISPH's splash particles have no Poisson row). 0 for the
+ * weakly compressible schemes, whose wall pressure does. */
 int fluid_scheme_holds_at_walls(const fluid_scheme *s);
 
 /* Pressure (and density) from the equation of state for every fluid particle. */

@@ -1115,12 +1115,13 @@ static double water_height(const fluid_particles *p)
 
 /* Water on a solid floor that does not move, over 0.3 s of steps taken as the main
  * loop takes them: its centre of mass stays within a quarter of a spacing of where it
- * started. Water cannot go down into a floor that stays put; a quarter of a spacing
- * is what a row of particles next to the floor may give (the weakly compressible
- * schemes move it by 3e-4 to 1.5e-3 dx here, ISPH by 0.11 dx). A scheme that puts the solid's inertia into
- * its pressure equation and counts the fluid's last load in the floor's motion twice
- * (in the received acceleration and again as its own) sees the floor recede by
- * dt F / m_S every step, and the water follows it down by spacings. */
+ * started. Water cannot go down into a floor that stays put. The bound is about twice
+ * the decaying bounce ISPH leaves when its pressure equation first meets the floor's
+ * load (0.11 dx; the weakly compressible schemes move the water by 3e-4 to 1.5e-3 dx).
+ * A scheme that puts the solid's inertia into its pressure equation and counts the
+ * fluid's last load in the floor's motion twice (in the received acceleration and
+ * again as its own) sees the floor recede by dt F / m_S every step, and the water
+ * follows it down by spacings (1.16 dx). */
 static void test_solid_floor_at_rest(void)
 {
     scene s;

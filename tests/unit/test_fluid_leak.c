@@ -25,7 +25,6 @@
 #define N 4
 static const double TOL = 0.036;
 
-
 static fluid_box boxes[2];
 static fluid_geometry geometry = {0.01, 2, 0, boxes, NULL};
 static double x[N * FSI_DIM], v[N * FSI_DIM];
