@@ -73,6 +73,12 @@ static const fsi_key_spec keys[] = {
      "(the structure's inertia in the PPE, 003 §2.3; stable against added mass); "
      "explicit: the received acceleration as it is, which an incompressible fluid makes "
      "unstable whenever the added mass exceeds the structure's (docs/isph.md, Coupling)."},
+    {"solid_inertia_depth", FSI_KEY_REAL, "m", "0", FSI_BOUND_MIN, 0, 0, NULL,
+     "With solid_inertia = in_poisson: each solid particle's mass in its Poisson row is "
+     "rho_S V_S times max(1, depth / dx_S), the structure behind it to this depth moving "
+     "with it. 0: the particle's own mass. Too light, the water drifts off a stiff plate "
+     "and gains energy; too heavy (the whole thickness of a thin plate), the explicit "
+     "exchange feeds the solid (docs/isph.md, How heavy the solid is in the PPE)."},
     {"neighbour_skin", FSI_KEY_REAL, "-", STR(FLUID_VERLET_SKIN), FSI_BOUND_MIN | FSI_BOUND_MAX, 0,
      1, NULL, "Skin of the candidate neighbour lists as a fraction of the support 2h; the "
      "results do not depend on it."},

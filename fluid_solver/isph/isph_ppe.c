@@ -79,13 +79,17 @@ static int reserve(isph_ppe *s, const isph_pairs *q, int n)
     return 0;
 }
 
-/* The mass rho_S V_S of solid particle j when its inertia is in the equation
- * (last_load set), else 0. */
+/* The mass of solid particle j in the equation when its inertia is in it (last_load
+ * set), else 0: rho_S V_S, times the structure's depth behind it in its own spacings
+ * when inertia_depth is set. */
 static double solid_mass(const isph_ppe *s, const fluid_particles *p, int j)
 {
     if (!s->last_load || !(p->flags[j] & FLUID_PARTICLE_MOVING_BOUNDARY))
         return 0.0;
-    return p->boundary_density[j] * p->volume[j];
+    const double mass = p->boundary_density[j] * p->volume[j];
+    if (!(s->inertia_depth > 0.0))
+        return mass;
+    return mass * fmax(1.0, s->inertia_depth / fluid_particle_side(p->volume[j]));
 }
 
 /* Component d of the acceleration of wall or solid particle j without the fluid's last

@@ -47,6 +47,10 @@ typedef struct {
      * load of the last step on every particle, the scheme's; NULL: the solid's
      * received acceleration is taken as it is */
     const double *last_load;
+    /* the depth of structure behind a solid particle whose mass its row carries [m]
+     * (solid_inertia_depth, docs/isph.md "How heavy the solid is in the PPE"): its mass
+     * rho_S V_S times max(1, depth / dx_S); 0: the particle's own */
+    double inertia_depth;
     fsi_precond_kind preconditioner;
     int gmres;                  /* 1: GMRES(30), 0: BiCGSTAB */
     double surface_offset;      /* where the free surface is, outside a surface particle [m] */

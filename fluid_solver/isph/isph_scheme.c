@@ -150,6 +150,7 @@ fluid_scheme *fluid_scheme_create(const fsi_case *c, const char *role,
                   fsi_case_choice_is(c, own, "ppe_solver", "gmres"),
                   fsi_case_get_real(c, own, "free_surface_offset", ISPH_SURFACE_OFFSET) *
                       p->spacing);
+    s->ppe.inertia_depth = fsi_case_get_real(c, own, "solid_inertia_depth", 0.0);
     s->contact = (isph_contact){
         fsi_case_get_real(c, own, "wall_contact", ISPH_WALL_CONTACT) * props->sound_speed *
             props->sound_speed,

@@ -15,13 +15,10 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-#include "cubic_spline.h"
-#include "isph_operators.h"
-#include "isph_pairs.h"
 #include "small_tensor.h"
-#include "verlet_list.h"
 
 #include "unit_check.h"
+#include "unit_isph_operators.h"
 
 #define NX 24
 #define NY 12
@@ -44,20 +41,12 @@ int main(void)
             p.density[k] = 1000.0;
             p.mass[k] = 1000.0 * DX * DX;
         }
-    cubic_spline_kernel kernel;
-    cubic_spline_init(&kernel, 1.2 * DX);
-    fluid_verlet list;
-    fluid_verlet_init(&list);
-    isph_pairs q;
-    isph_pairs_init(&q);
-    isph_fields f;
-    isph_fields_init(&f);
-    f.correct = 1;
-    CHECK(fluid_verlet_update(&list, &p, kernel.support, 0.0) >= 0, "neighbour lists");
-    CHECK(isph_pairs_build(&q, &list, &kernel, &p) == 0, "pairs");
-    CHECK(isph_fields_reserve(&f, p.n) == 0, "fields");
-    isph_geometry(&q, &p, &f);
-    isph_free_surface(&q, &p, NULL, 1.4, 1.6, kernel.h, &f);
+    unit_isph_operators o;
+    CHECK(unit_isph_operators_build(&o, &p) == 0, "neighbour lists, pairs and fields");
+    const cubic_spline_kernel *kernel = &o.kernel;
+    const isph_fields *f = &o.f;
+    isph_geometry(&o.q, &p, &o.f);
+    isph_free_surface(&o.q, &p, NULL, 1.4, 1.6, kernel->h, &o.f);
 
     /* the lattice sum, apart from the scheme's pairs */
     double lattice = 0.0;
@@ -65,7 +54,7 @@ int main(void)
         for (int b = -3; b <= 3; b++) {
             double w, fr;
             const double r2 = (a * a + b * b) * DX * DX;
-            cubic_spline_eval2(&kernel, r2, &w, &fr);
+            cubic_spline_eval2(kernel, r2, &w, &fr);
             lattice -= DX * DX * fr * r2;
         }
     double worst_div = 0.0, worst_b = 0.0, worst_top = 0.0, worst_alpha_inside = 0.0;
@@ -75,26 +64,26 @@ int main(void)
             const int k = j * NX + i;
             const int inside = i >= 3 && i < NX - 3 && j >= 3 && j < NY - 3;
             if (inside) {
-                worst_div = fmax(worst_div, fabs(f.div_r[k] - lattice) / lattice);
+                worst_div = fmax(worst_div, fabs(f->div_r[k] - lattice) / lattice);
                 double id[FSI_MAT_SIZE];
                 fsi_mat_identity(id);
                 for (int m = 0; m < FSI_MAT_SIZE; m++)
-                    worst_b = fmax(worst_b, fabs(f.b[k * FSI_MAT_SIZE + m] -
+                    worst_b = fmax(worst_b, fabs(f->b[k * FSI_MAT_SIZE + m] -
                                                  2.0 / lattice * id[m]));
-                worst_alpha_inside = fmax(worst_alpha_inside, fabs(f.alpha[k] - 1.0));
+                worst_alpha_inside = fmax(worst_alpha_inside, fabs(f->alpha[k] - 1.0));
             }
             const int away_from_sides = i >= 3 && i < NX - 3;
             if (j == NY - 1 && away_from_sides) {
-                top_surface &= f.where[k] == ISPH_SURFACE && f.alpha[k] == 0.0;
-                worst_top = fmax(worst_top, fabs(f.normal[k * 2]) + fabs(f.normal[k * 2 + 1] - 1.0));
+                top_surface &= f->where[k] == ISPH_SURFACE && f->alpha[k] == 0.0;
+                worst_top = fmax(worst_top, fabs(f->normal[k * 2]) + fabs(f->normal[k * 2 + 1] - 1.0));
             }
             if (j == NY - 2 && away_from_sides)
-                second_near &= f.where[k] == ISPH_NEAR_SURFACE &&
-                               fabs(f.normal[k * 2 + 1] - 1.0) < 1e-6;
+                second_near &= f->where[k] == ISPH_NEAR_SURFACE &&
+                               fabs(f->normal[k * 2 + 1] - 1.0) < 1e-6;
             /* down a column, div r and alpha grow together */
             if (j > 0 && away_from_sides) {
                 const int below = k - NX;
-                if (f.div_r[below] > f.div_r[k] && f.alpha[below] < f.alpha[k])
+                if (f->div_r[below] > f->div_r[k] && f->alpha[below] < f->alpha[k])
                     monotone = 0;
             }
         }
@@ -109,9 +98,7 @@ int main(void)
     CHECK(worst_top < 1e-6, "the top row's normal is %.3g away from (0, 1)", worst_top);
     CHECK(second_near, "the second row is not near-surface with the top row's normal");
     CHECK(monotone, "alpha does not grow with div r");
-    isph_fields_free(&f);
-    isph_pairs_free(&q);
-    fluid_verlet_free(&list);
+    unit_isph_operators_free(&o);
     fluid_particles_free(&p);
 #endif
     return unit_check_report("test_isph_free_surface");
